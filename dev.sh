@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# One entry point for newcomers and CI.
+#   ./dev.sh demo            install what is missing, build, run the default analysis
+#   ./dev.sh test            install what is missing, build, run the whole test suite
+#   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan (build-asan/)
+#   ./dev.sh build           install + build only
+# Re-running is fast: packages already present are not touched, builds are incremental.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")"
+
+PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
+          libgsl-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox)
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "dev.sh: installing ${missing[*]}" >&2
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+}
+
+JOBS=$(nproc 2>/dev/null || echo 2)
+
+build() {  # build DIR [cmake args...]
+  local dir=$1; shift
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRACKOPT_WERROR=ON "$@" >/dev/null
+  cmake --build "$dir" -j "$JOBS" >&2
+}
+
+cmd=${1:-demo}; shift || true
+case "$cmd" in
+  build)
+    install_missing; build build ;;
+  demo)
+    install_missing; build build
+    ./build/rackopt stiffness problems/rack_railway.yaml --out out/rack_railway "$@" ;;
+  test)
+    install_missing
+    if [ "${1:-}" = "--sanitize" ]; then
+      build build-asan -DRACKOPT_SANITIZE=ON -DRACKOPT_BENCHMARKS=OFF
+      ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+        ctest --test-dir build-asan --output-on-failure -j "$JOBS"
+    else
+      build build
+      ctest --test-dir build --output-on-failure -j "$JOBS"
+    fi ;;
+  *)
+    echo "usage: ./dev.sh demo|test [--sanitize]|build" >&2; exit 2 ;;
+esac
