@@ -1,0 +1,180 @@
+// Unit parsing and formatting. Expected SI values are the textbook unit
+// definitions (1 mm = 1e-3 m, 1 deg = pi/180 rad, 1 in = 25.4 mm exactly,
+// 1 N/mm^2 = 1 MPa), written out by hand here, not taken from the code.
+#include "rackopt/units/units.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace rackopt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+using K = QuantityKind;
+
+TEST(ParseQuantity, LengthsInEveryUnit) {
+  EXPECT_DOUBLE_EQ(parse_quantity("60 mm", K::kLength), 0.060);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.4 m", K::kLength), 2.4);
+  EXPECT_DOUBLE_EQ(parse_quantity("3 cm", K::kLength), 0.03);
+  EXPECT_DOUBLE_EQ(parse_quantity("1 um", K::kLength), 1e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity("1 \xC2\xB5m", K::kLength), 1e-6);  // micro sign
+  EXPECT_DOUBLE_EQ(parse_quantity("1 \xCE\xBCm", K::kLength), 1e-6);  // greek mu
+  EXPECT_DOUBLE_EQ(parse_quantity("1 in", K::kLength), 0.0254);
+  EXPECT_DOUBLE_EQ(parse_quantity("60mm", K::kLength), 0.060);       // no space
+  EXPECT_DOUBLE_EQ(parse_quantity("  31.831 mm  ", K::kLength), 0.031831);
+  EXPECT_DOUBLE_EQ(parse_quantity("-2 mm", K::kLength), -0.002);
+  EXPECT_DOUBLE_EQ(parse_quantity("+2 mm", K::kLength), 0.002);
+}
+
+TEST(ParseQuantity, BareNumberTakesTheKindDefaultUnit) {
+  // The documented defaults: length mm, angle deg, modulus GPa, force N,
+  // torque N*m, stiffness N/m, area mm^2, second moment mm^4.
+  EXPECT_DOUBLE_EQ(parse_quantity("60", K::kLength), 0.060);
+  EXPECT_DOUBLE_EQ(parse_quantity("14", K::kAngle), 14.0 * kPi / 180.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("210", K::kModulus), 210e9);
+  EXPECT_DOUBLE_EQ(parse_quantity("50", K::kForce), 50.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("453", K::kTorque), 453.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("7", K::kStiffness), 7.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("3600", K::kArea), 3600e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity("2", K::kSecondMoment), 2e-12);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.3", K::kDimensionless), 0.3);
+  EXPECT_EQ(default_unit(K::kLength), "mm");
+  EXPECT_EQ(default_unit(K::kAngle), "deg");
+  EXPECT_EQ(default_unit(K::kModulus), "GPa");
+  EXPECT_EQ(default_unit(K::kForce), "N");
+  EXPECT_EQ(default_unit(K::kTorque), "N*m");
+  EXPECT_EQ(default_unit(K::kDimensionless), "");
+}
+
+TEST(ParseQuantity, OtherKinds) {
+  EXPECT_DOUBLE_EQ(parse_quantity("14 deg", K::kAngle), 14.0 * kPi / 180.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("14\xC2\xB0", K::kAngle), 14.0 * kPi / 180.0);  // 14°
+  EXPECT_DOUBLE_EQ(parse_quantity("0.25 rad", K::kAngle), 0.25);
+  EXPECT_DOUBLE_EQ(parse_quantity("210 GPa", K::kModulus), 210e9);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.11e5 MPa", K::kModulus), 211e9);  // seed 001's 40Cr
+  EXPECT_DOUBLE_EQ(parse_quantity("2.11e5 N/mm^2", K::kModulus), 211e9);
+  EXPECT_DOUBLE_EQ(parse_quantity("50 kN", K::kForce), 50e3);
+  EXPECT_DOUBLE_EQ(parse_quantity("1.2e3 N", K::kForce), 1200.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("200 MN/m", K::kStiffness), 200e6);
+  EXPECT_DOUBLE_EQ(parse_quantity("1 N/um", K::kStiffness), 1e6);
+  EXPECT_DOUBLE_EQ(parse_quantity("3600 mm^2", K::kArea), 3600e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity("3600 mm\xC2\xB2", K::kArea), 3600e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.15e6 mm^4", K::kSecondMoment), 2.15e-6);
+  EXPECT_DOUBLE_EQ(parse_quantity("1 cm\xE2\x81\xB4", K::kSecondMoment), 1e-8);
+}
+
+TEST(ParseQuantity, TorqueSpellings) {
+  // All the ways people write kilonewton-metres mean 1e3 N*m.
+  for (const char* text : {"453 kN*m", "453 kN.m", "453 kN m", "453 kN\xC2\xB7m", "453 kN * m", "453kN*m"}) {
+    EXPECT_DOUBLE_EQ(parse_quantity(text, K::kTorque), 453e3) << text;
+  }
+  EXPECT_DOUBLE_EQ(parse_quantity("5 N*mm", K::kTorque), 5e-3);
+  EXPECT_DOUBLE_EQ(parse_quantity("1 MN m", K::kTorque), 1e6);
+}
+
+TEST(ParseCount, WholeNumbersOnly) {
+  EXPECT_EQ(parse_count("22"), 22);
+  EXPECT_EQ(parse_count(" 17 "), 17);
+  EXPECT_EQ(parse_count("-3"), -3);
+  EXPECT_THROW(parse_count("22.5"), InputError);
+  EXPECT_THROW(parse_count("22 teeth"), InputError);
+  EXPECT_THROW(parse_count("1e12"), InputError);  // does not fit an int
+  EXPECT_DOUBLE_EQ(parse_quantity("22", K::kCount), 22.0);
+}
+
+// Asserts that parsing throws an InputError whose message contains `needle`,
+// and that the mark and key given by the caller are carried through.
+void expect_error(const std::string& text, K kind, const std::string& needle) {
+  const SourceMark where{"f.yaml", 7, 12};
+  try {
+    parse_quantity(text, kind, where, "pinion.pressure_angle");
+    ADD_FAILURE() << "no error for '" << text << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.message()).find(needle), std::string::npos)
+        << "message '" << e.message() << "' lacks '" << needle << "'";
+    EXPECT_EQ(e.mark().file, "f.yaml");
+    EXPECT_EQ(e.mark().line, 7);
+    EXPECT_EQ(e.mark().column, 12);
+    EXPECT_EQ(e.key_path(), "pinion.pressure_angle");
+    EXPECT_NE(std::string(e.what()).find("f.yaml:7:12: pinion.pressure_angle: "), std::string::npos) << e.what();
+  }
+}
+
+TEST(ParseQuantity, ErrorsNameTheProblemAndTheAllowedUnits) {
+  // Unknown unit: the allowed ones are listed.
+  expect_error("14 kg", K::kAngle, "unknown unit 'kg' for an angle; allowed units: deg, rad, mrad");
+  // A unit that exists, but for another kind.
+  expect_error("14 mm", K::kAngle, "'mm' is a unit of a length but an angle is expected");
+  expect_error("50 GPa", K::kForce, "'GPa' is a unit of a modulus but a force is expected");
+  // Trailing garbage after a valid unit.
+  expect_error("60 mm x", K::kLength, "unknown unit 'mm x' for a length");
+  // Not a number at all.
+  expect_error("sixty mm", K::kLength, "is not a number");
+  expect_error("", K::kLength, "empty value");
+  expect_error("+-5 mm", K::kLength, "is not a number");
+  // Non-finite and overflowing numbers never get through.
+  expect_error("inf mm", K::kLength, "not a finite number");
+  expect_error("nan", K::kLength, "not a finite number");
+  expect_error("1e400 mm", K::kLength, "outside the range");
+  expect_error("1e308 MN*m", K::kTorque, "overflows");
+  // A unit on a dimensionless value.
+  expect_error("0.3 mm", K::kDimensionless, "is a unit of a length but a dimensionless number is expected");
+  expect_error("0.3 abc", K::kDimensionless, "unexpected text 'abc'");
+}
+
+TEST(UnitNames, DefaultFirstAndKindsDisjoint) {
+  for (K kind : {K::kLength, K::kAngle, K::kModulus, K::kForce, K::kTorque, K::kStiffness, K::kArea,
+                 K::kSecondMoment}) {
+    const auto names = unit_names(kind);
+    ASSERT_FALSE(names.empty());
+    EXPECT_EQ(names.front(), default_unit(kind));
+    for (const auto& n : names) {
+      // Each unit parses as its own kind with a factor > 0 ...
+      EXPECT_GT(unit_factor(n, kind), 0.0) << n;
+      // ... and is rejected by every other kind (no unit is ambiguous).
+      for (K other : {K::kLength, K::kAngle, K::kModulus, K::kForce, K::kTorque, K::kStiffness, K::kArea,
+                      K::kSecondMoment}) {
+        if (other != kind) {
+          EXPECT_THROW(unit_factor(n, other), InputError) << n;
+        }
+      }
+    }
+  }
+  EXPECT_TRUE(unit_names(K::kDimensionless).empty());
+}
+
+TEST(Format, PrintsInTheRequestedUnit) {
+  EXPECT_EQ(format_length_mm(0.060), "60 mm");
+  EXPECT_EQ(format_length_mm(0.031831), "31.831 mm");
+  EXPECT_EQ(format_angle_deg(14.0 * kPi / 180.0), "14 deg");
+  EXPECT_EQ(format_force_kN(956.5e3), "956.5 kN");
+  EXPECT_EQ(format_stiffness_MN_per_m(26.095e6), "26.095 MN/m");
+  EXPECT_EQ(format_quantity(453e3, K::kTorque, "kN.m"), "453 kN*m");
+  EXPECT_EQ(format_quantity(2.4, K::kLength, "m"), "2.4 m");
+  EXPECT_EQ(format_quantity(0.3, K::kDimensionless), "0.3");
+  EXPECT_EQ(format_quantity(210e9, K::kModulus), "210 GPa");
+  EXPECT_EQ(format_length_mm(1.0 / 3.0, 3), "333 mm");
+}
+
+TEST(Format, RoundTripsThroughTheParserInEveryUnit) {
+  // Values spanning many decades; 15 significant digits must survive the trip
+  // to within 1e-14 relative (the limit of %.15g).
+  const double values[] = {1.0, 0.031831, 123456.789, 2.5e-7, 9.87654321e8, -0.0042};
+  for (K kind : {K::kLength, K::kAngle, K::kModulus, K::kForce, K::kTorque, K::kStiffness, K::kArea,
+                 K::kSecondMoment, K::kDimensionless}) {
+    std::vector<std::string> units = unit_names(kind);
+    if (units.empty()) units.push_back("");
+    for (const auto& unit : units) {
+      for (double v : values) {
+        const std::string text = format_quantity(v, kind, unit, 15);
+        const double back = parse_quantity(text, kind);
+        EXPECT_NEAR(back, v, 1e-14 * std::fabs(v)) << text;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rackopt
