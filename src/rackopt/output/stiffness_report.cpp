@@ -1,0 +1,206 @@
+#include "rackopt/output/stiffness_report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "rackopt/output/json_writer.hpp"
+
+namespace rackopt {
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+std::string mm(double v) { return fmt("%.3f", v * 1e3) + " mm"; }
+std::string deg(double v) { return fmt("%.3f", v * 180.0 / M_PI) + " deg"; }
+std::string mnm(double v) { return fmt("%.3f", v * 1e-6) + " MN/m"; }
+
+const char* limited_by_text(const std::string& s) {
+  if (s == "rack_tip") return "rack tip";
+  if (s == "form_circle") return "pinion form circle (undercut / interference limit)";
+  if (s == "base_circle") return "pinion base circle (interference limit)";
+  return s.c_str();
+}
+
+}  // namespace
+
+std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
+  std::ostringstream o;
+  const PinionGeometry& p = g.pinion;
+  const ContactPath& c = g.path;
+  o << (d.name.empty() ? std::string("rack drive") : d.name) << "\n";
+  o << "  pinion: z = " << d.pinion.teeth << ", m = " << mm(d.pinion.module)
+    << ", alpha = " << deg(d.pinion.pressure_angle) << ", x = " << d.pinion.profile_shift
+    << ", b = " << mm(d.pinion.face_width) << "\n";
+  o << "    radii: pitch " << mm(p.pitch_radius) << ", base " << mm(p.base_radius) << ", tip "
+    << mm(p.tip_radius) << ", root " << mm(p.root_radius) << ", form " << mm(p.form_radius) << "\n";
+  o << "    tip thickness " << mm(p.tip_thickness) << (p.undercut ? ", UNDERCUT" : ", no undercut") << "\n";
+  o << "  rack: pitch " << mm(g.rack.pitch) << ", addendum " << mm(g.rack.addendum) << ", dedendum "
+    << mm(g.rack.dedendum) << ", span " << fmt("%.3f", d.rack.span) << " m ("
+    << (d.rack.supports == Supports::kPinPin ? "pin-pin" : "pin-roller") << ")\n";
+  o << "  mounting clearance " << mm(d.mounting.clearance) << "\n";
+  o << "  line of action (from the base-circle tangency point):\n";
+  o << "    rack tip at s_A = " << mm(c.s_rack_tip) << ", pitch point s_P = " << mm(c.s_pitch)
+    << ", pinion tip s_E = " << mm(c.s_end) << "\n";
+  o << "    active path " << mm(c.s_start) << " .. " << mm(c.s_end) << " (start limited by "
+    << limited_by_text(c.start_limited_by) << "), base pitch " << mm(c.base_pitch) << "\n";
+  o << "  contact ratio " << fmt("%.4f", c.contact_ratio) << " (geometric, interference ignored: "
+    << fmt("%.4f", c.contact_ratio_geometric) << ")\n";
+  o << "  zones per mesh period:\n";
+  for (const Zone& z : g.zones) {
+    o << "    " << z.pairs << " pair" << (z.pairs == 1 ? " " : "s") << ": " << mm(z.length_loa)
+      << " along the LOA, " << mm(z.length_travel) << " of rack travel, " << mm(z.length_flank)
+      << " along the rack flank, " << deg(z.pinion_angle) << " of pinion rotation\n";
+  }
+  for (const std::string& w : g.warnings) o << "  warning: " << w << "\n";
+  return o.str();
+}
+
+std::string stiffness_summary(const StiffnessCurve& c) {
+  std::ostringstream o;
+  o << "  mesh stiffness over the span (" << c.samples.size() << " samples, " << c.breakpoints.size()
+    << " discontinuities):\n";
+  o << "    min  " << mnm(c.k_min) << " at X = " << fmt("%.4f", c.travel_at_min) << " m\n";
+  o << "    max  " << mnm(c.k_max) << " at X = " << fmt("%.4f", c.travel_at_max) << " m\n";
+  o << "    mean " << mnm(c.k_mean) << ", fluctuation (max-min)/mean = " << fmt("%.4f", c.k_fluctuation)
+    << "\n";
+  return o.str();
+}
+
+std::string stiffness_csv(const StiffnessCurve& c) {
+  std::string out;
+  out.reserve(c.samples.size() * (64 + 260 * static_cast<std::size_t>(c.max_pairs)));
+  out += "travel_m,stiffness_N_per_m,rigid_body_stiffness_N_per_m,pairs_in_mesh,body_equivalent_compliance_m_per_N";
+  static const char* kPairCols[] = {"in_mesh",         "rack_tooth",     "pinion_tooth",   "s_m",
+                                    "x_m",             "load_share",     "c_pinion_bending", "c_pinion_shear",
+                                    "c_pinion_axial",  "c_fillet",       "c_hertz",        "c_rack_bending",
+                                    "c_rack_shear",    "c_rack_axial",   "c_body"};
+  for (int q = 0; q < c.max_pairs; ++q) {
+    for (const char* col : kPairCols) out += ",pair" + std::to_string(q) + "_" + col;
+  }
+  out += '\n';
+  char buf[64];
+  auto num = [&](double v) {
+    std::snprintf(buf, sizeof buf, ",%.9g", v);
+    out += buf;
+  };
+  for (const MeshState& s : c.samples) {
+    std::snprintf(buf, sizeof buf, "%.9g", s.travel);
+    out += buf;
+    num(s.stiffness);
+    num(s.local_stiffness);
+    out += "," + std::to_string(s.pairs.size());
+    num(s.stiffness > 0 && s.local_stiffness > 0 ? 1.0 / s.stiffness - 1.0 / s.local_stiffness : 0.0);
+    for (int q = 0; q < c.max_pairs; ++q) {
+      const PairState* p = nullptr;
+      for (const PairState& cand : s.pairs) {
+        if (cand.slot == q) p = &cand;
+      }
+      if (!p) {
+        out += ",0";
+        for (std::size_t k = 1; k < std::size(kPairCols); ++k) out += ",";
+        continue;
+      }
+      out += ",1," + std::to_string(p->rack_tooth) + "," + std::to_string(p->pinion_tooth);
+      num(p->s);
+      num(p->x);
+      num(p->load_share);
+      num(p->pinion.bending);
+      num(p->pinion.shear);
+      num(p->pinion.axial);
+      num(p->fillet);
+      num(p->hertz);
+      num(p->rack.bending);
+      num(p->rack.shear);
+      num(p->rack.axial);
+      num(p->body);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string stiffness_json(const Drive& d, const MeshGeometry& g, const StiffnessCurve& c, const Timings& t,
+                           const std::string& csv_path, const std::string& plot_path) {
+  JsonWriter j;
+  j.begin_object();
+  j.key("problem").value(d.source_file);
+  j.key("name").value(d.name);
+  j.key("contact_ratio").value(g.path.contact_ratio);
+  j.key("contact_ratio_geometric").value(g.path.contact_ratio_geometric);
+  j.key("path_of_contact").begin_object();
+  j.key("s_start").value(g.path.s_start);
+  j.key("s_end").value(g.path.s_end);
+  j.key("s_pitch").value(g.path.s_pitch);
+  j.key("s_rack_tip").value(g.path.s_rack_tip);
+  j.key("start_limited_by").value(g.path.start_limited_by);
+  j.key("base_pitch").value(g.path.base_pitch);
+  j.end_object();
+  j.key("undercut").value(g.pinion.undercut);
+  j.key("k_min").value(c.k_min);
+  j.key("k_max").value(c.k_max);
+  j.key("k_mean").value(c.k_mean);
+  j.key("k_fluctuation").value(c.k_fluctuation);
+  j.key("travel_at_min").value(c.travel_at_min);
+  j.key("travel_at_max").value(c.travel_at_max);
+  j.key("zones").begin_object();
+  for (const Zone& z : g.zones) j.key(std::to_string(z.pairs)).value(z.length_travel);
+  j.end_object();
+  j.key("zones_along_loa").begin_object();
+  for (const Zone& z : g.zones) j.key(std::to_string(z.pairs)).value(z.length_loa);
+  j.end_object();
+  j.key("breakpoints").begin_array();
+  for (double b : c.breakpoints) j.value(b);
+  j.end_array();
+  j.key("samples").value(static_cast<long>(c.samples.size()));
+  j.key("warnings").begin_array();
+  for (const std::string& w : c.warnings) j.value(w);
+  j.end_array();
+  j.key("files").begin_object();
+  j.key("csv").value(csv_path);
+  if (plot_path.empty()) {
+    j.key("plot").null();
+  } else {
+    j.key("plot").value(plot_path);
+  }
+  j.end_object();
+  j.key("timings").begin_object();
+  j.key("model_ms").value(t.model_ms);
+  j.key("curve_ms").value(t.curve_ms);
+  j.key("total_ms").value(t.total_ms);
+  j.end_object();
+  j.end_object();
+  return j.str();
+}
+
+std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title, const std::string& csv_name,
+                              const std::string& png_name) {
+  std::ostringstream o;
+  o << "# Generated by rackopt: plots " << csv_name << " (columns: docs/output.md)\n";
+  o << "set datafile separator ','\n";
+  o << "set terminal pngcairo size 1400,900 noenhanced font ',11'\n";
+  o << "set output '" << png_name << "'\n";
+  o << "set multiplot layout 2,1 title '" << title << "'\n";
+  o << "set grid\nset key outside right\n";
+  o << "set ylabel 'mesh stiffness [MN/m]'\n";
+  o << "plot '" << csv_name << "' using 1:($2/1e6) with lines lw 2 title 'coupled mesh', \\\n"
+    << "     '' using 1:($3/1e6) with lines dt 2 title 'rigid rack body'\n";
+  o << "set xlabel 'travel of the pitch point along the span [m]'\n";
+  o << "set ylabel 'load share [-]'\nset yrange [0:1.05]\n";
+  const int base = 6;  // first per-pair column (1-based) is pair0_in_mesh
+  const int per_pair = 15;
+  o << "plot '" << csv_name << "' using 1:(1/0) notitle";
+  for (int q = 0; q < c.max_pairs; ++q) {
+    const int in_col = base + q * per_pair;
+    const int share_col = in_col + 5;
+    o << ", \\\n     " << "'' using 1:($" << in_col << ">0 ? $" << share_col
+      << " : 1/0) with lines title 'pair slot " << q << "'";
+  }
+  o << "\nunset multiplot\n";
+  return o.str();
+}
+
+}  // namespace rackopt

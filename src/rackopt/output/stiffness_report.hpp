@@ -1,0 +1,39 @@
+// What `rackopt check` and `rackopt stiffness` show and write: the geometry
+// summary, the stiffness CSV (columns in docs/output.md), the JSON summary and
+// the gnuplot script for the plot.
+#pragma once
+
+#include <string>
+
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace rackopt {
+
+// Human-readable geometry: radii, path of contact, contact ratio, zones,
+// undercut/interference, warnings. Lengths in mm, angles in deg.
+std::string geometry_summary(const Drive& drive, const MeshGeometry& geometry);
+
+// Human-readable stiffness result (MN/m), plus where files went.
+std::string stiffness_summary(const StiffnessCurve& curve);
+
+// One row per sample; per-pair columns repeated for slots 0..max_pairs-1.
+// SI units throughout (m, N/m, m/N).
+std::string stiffness_csv(const StiffnessCurve& curve);
+
+struct Timings {
+  double model_ms = 0;  // geometry + tooth models
+  double curve_ms = 0;  // the whole-span curve
+  double total_ms = 0;
+};
+
+// Exactly one JSON object (SI units): contact_ratio, k_min, k_max, k_mean,
+// k_fluctuation, zones, warnings, timings, ...
+std::string stiffness_json(const Drive& drive, const MeshGeometry& geometry, const StiffnessCurve& curve,
+                           const Timings& timings, const std::string& csv_path, const std::string& plot_path);
+
+// gnuplot script that reads `csv_name` (in the same directory) and writes `png_name`.
+std::string stiffness_gnuplot(const StiffnessCurve& curve, const std::string& title, const std::string& csv_name,
+                              const std::string& png_name);
+
+}  // namespace rackopt

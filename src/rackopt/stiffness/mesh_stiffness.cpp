@@ -1,0 +1,585 @@
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <unordered_map>
+
+#include <Eigen/Dense>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/fillet_foundation.hpp"
+#include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/pinion_tooth.hpp"
+#include "rackopt/stiffness/rack_span.hpp"
+#include "rackopt/stiffness/rack_tooth.hpp"
+
+namespace rackopt {
+namespace {
+
+// A spall mapped onto the geometry of its member.
+struct MappedSpall {
+  Member member = Member::kPinion;
+  int tooth = 0;
+  SpallBand band;
+  double s_lo = 0, s_hi = 0;  // LOA interval on which the contact lies inside the spall
+  double width = 0;
+};
+
+// Tooth-level compliance of one pair without the Hertz term (which depends on
+// the effective width and, for Weber-Banaschek, on the pair force).
+struct LocalParts {
+  ToothCompliance pinion;
+  double fillet = 0;
+  ToothCompliance rack;
+  double face_width = 0;  // effective contact width (reduced inside a spall)
+  bool spalled = false;
+};
+
+struct CacheKey {
+  std::int64_t s_key;
+  int pinion_spall;  // -1 or index of the pinion tooth carrying a spall
+  int rack_spall;    // -1 or global rack tooth index carrying a spall
+  bool operator==(const CacheKey& o) const {
+    return s_key == o.s_key && pinion_spall == o.pinion_spall && rack_spall == o.rack_spall;
+  }
+};
+struct CacheKeyHash {
+  std::size_t operator()(const CacheKey& k) const {
+    std::uint64_t h = static_cast<std::uint64_t>(k.s_key) * 0x9E3779B97F4A7C15ULL;
+    h ^= static_cast<std::uint64_t>(k.pinion_spall + 7) * 0xC2B2AE3D27D4EB4FULL;
+    h ^= static_cast<std::uint64_t>(k.rack_spall + 1000003) * 0x165667B19E3779F9ULL;
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+using LocalCache = std::unordered_map<CacheKey, LocalParts, CacheKeyHash>;
+
+int floor_div_int(double v) { return static_cast<int>(std::floor(v)); }
+
+}  // namespace
+
+struct MeshStiffnessModel::Impl {
+  Drive drive;
+  MeshGeometry geo;
+  std::vector<std::string> warnings;
+
+  std::optional<PinionToothCompliance> pinion_tooth;
+  std::optional<FilletFoundationCompliance> fillet;
+  std::optional<RackToothCompliance> rack_tooth;
+  std::optional<RackSpanCompliance> span_model;
+
+  double a0 = 0, ca = 0, sa = 0;
+  double pitch = 0, pb = 0, s_p = 0, s_start = 0, s_end = 0;
+  double A0 = 0;       // s of the pair on rack tooth 0 at X = 0
+  double span = 0;
+  double contact_width = 0;
+  double e_star = 0;
+  double neutral_axis_depth = 0;
+  int z = 0;
+  int slots = 1;
+  std::vector<MappedSpall> spalls;
+
+  explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)) {
+    warnings = geo.warnings;
+    const Effects& fx = drive.effects;
+    a0 = drive.pinion.pressure_angle;
+    ca = std::cos(a0);
+    sa = std::sin(a0);
+    pitch = M_PI * drive.pinion.module;
+    pb = geo.path.base_pitch;
+    s_p = geo.path.s_pitch;
+    s_start = geo.path.s_start;
+    s_end = geo.path.s_end;
+    span = drive.rack.span;
+    z = drive.pinion.teeth;
+    const double b_rack = drive.rack.face_width > 0 ? drive.rack.face_width : drive.pinion.face_width;
+    contact_width = std::min(drive.pinion.face_width, b_rack);
+    e_star = effective_modulus(drive.pinion.material, drive.rack.material);
+    neutral_axis_depth = drive.rack.section.neutral_axis_depth;
+    slots = static_cast<int>(std::floor(geo.path.contact_ratio)) + 1;
+
+    // Rack tooth j has its centre at x_t = offset + j p. Its -x flank carries
+    // the contact; solving x_contact(s) = x_t - w(h(s)) for s gives
+    // s = cos a0 [x_t - X - p/4 + (x m + Delta) tan a0] + s_P (docs/models/mesh.md).
+    const double offset = drive.rack.tooth_offset >= 0 ? drive.rack.tooth_offset : 0.5 * pitch;
+    const double shift = drive.pinion.profile_shift * drive.pinion.module + drive.mounting.clearance;
+    A0 = ca * (offset - 0.25 * pitch + shift * std::tan(a0)) + s_p;
+
+    if (fx.pinion_tooth) pinion_tooth.emplace(geo, drive.pinion, fx, drive.numerics);
+    if (fx.fillet_foundation) {
+      fillet.emplace(geo, drive.pinion);
+      if (fillet->outside_fitted_range()) {
+        std::ostringstream w;
+        w << "fillet foundation: (h_f, theta_f) = (" << fillet->h_f() << ", " << fillet->theta_f()
+          << " rad) is outside the fitted range of Sainsot's table (1.4..7, 0.01..0.12 rad); "
+             "extrapolated";
+        warnings.push_back(w.str());
+      }
+    }
+    if (fx.rack_tooth) rack_tooth.emplace(geo, drive.rack, b_rack, drive.numerics);
+    if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(drive.rack, a0, fx);
+    if (fx.spalling) map_spalls();
+  }
+
+  void map_spalls() {
+    const double rb = geo.pinion.base_radius;
+    for (const Spall& sp : drive.spalls) {
+      MappedSpall m;
+      m.member = sp.member;
+      m.tooth = sp.tooth;
+      m.width = sp.width;
+      const std::string label = sp.name.empty() ? std::string("spall") : sp.name;
+      if (sp.width >= contact_width) {
+        std::ostringstream msg;
+        msg << label << ": width " << sp.width * 1e3 << " mm is not less than the face width "
+            << contact_width * 1e3 << " mm";
+        throw DesignError("spall_too_wide", msg.str());
+      }
+      if (sp.member == Member::kPinion) {
+        if (sp.tooth < 0 || sp.tooth >= z) {
+          throw DesignError("spall_off_profile",
+                            label + ": pinion tooth " + std::to_string(sp.tooth) + " outside 0.." +
+                                std::to_string(z - 1));
+        }
+        const double r_low_active = geo.pinion_contact_radius(std::max(s_start, 0.0));
+        m.band.low = r_low_active + sp.start;
+        m.band.high = m.band.low + sp.length;
+        const double r_tip = geo.pinion.tip_radius;
+        if (sp.start < 0 || m.band.high > r_tip * (1 + 1e-12)) {
+          std::ostringstream msg;
+          msg << label << ": pinion band " << (m.band.low - r_low_active) * 1e3 << ".."
+              << (m.band.high - r_low_active) * 1e3
+              << " mm above the start of the active profile leaves the active profile (height "
+              << (r_tip - r_low_active) * 1e3 << " mm)";
+          throw DesignError("spall_off_profile", msg.str());
+        }
+        m.band.high = std::min(m.band.high, r_tip);
+        m.s_lo = std::sqrt(std::max(m.band.low * m.band.low - rb * rb, 0.0));
+        m.s_hi = std::sqrt(std::max(m.band.high * m.band.high - rb * rb, 0.0));
+      } else {
+        // Rack flank: heights above the root line. Lowest active point meets the pinion tip.
+        const double ded = geo.rack.dedendum;
+        const double y_low_active = ded + geo.contact_height_above_datum(s_end);
+        const double y_high_active = ded + geo.contact_height_above_datum(s_start);
+        m.band.low = y_low_active + sp.start;
+        m.band.high = m.band.low + sp.length;
+        if (sp.start < 0 || m.band.high > y_high_active * (1 + 1e-12)) {
+          std::ostringstream msg;
+          msg << label << ": rack band " << sp.start * 1e3 << ".." << (sp.start + sp.length) * 1e3
+              << " mm above the lowest active point leaves the active flank (height "
+              << (y_high_active - y_low_active) * 1e3 << " mm)";
+          throw DesignError("spall_off_profile", msg.str());
+        }
+        m.band.high = std::min(m.band.high, y_high_active);
+        // y(s) decreases with s.
+        m.s_hi = s_of_rack_height(m.band.low);
+        m.s_lo = s_of_rack_height(m.band.high);
+      }
+      m.band.width = sp.width;
+      m.band.depth = sp.depth;
+      spalls.push_back(m);
+      // Let the tooth models check depth against the local thickness now,
+      // rather than in the middle of a curve.
+      LocalParts probe;
+      if (m.member == Member::kPinion && pinion_tooth) {
+        (void)pinion_tooth->at(s_end, &spalls.back().band);
+      }
+      if (m.member == Member::kRack && rack_tooth) {
+        (void)rack_tooth->at(s_start, &spalls.back().band);
+      }
+    }
+  }
+
+  double s_of_rack_height(double y_above_root) const {
+    const double h = y_above_root - geo.rack.dedendum;  // above datum
+    const double r = geo.pinion.pitch_radius;
+    return (r * sa * sa + geo.profile_shift_length + geo.clearance - h) / sa;
+  }
+
+  int pinion_tooth_of(int rack_j) const { return ((rack_j % z) + z) % z; }
+
+  const MappedSpall* spall_for(Member member, int tooth) const {
+    for (const MappedSpall& m : spalls) {
+      if (m.member == member && m.tooth == tooth) return &m;
+    }
+    return nullptr;
+  }
+
+  // Tooth parts at LOA coordinate s for the pair (pinion tooth i, rack tooth j).
+  LocalParts local_parts(double s, int i, int j) const {
+    LocalParts out;
+    out.face_width = contact_width;
+    const MappedSpall* ps = spalls.empty() ? nullptr : spall_for(Member::kPinion, i);
+    const MappedSpall* rs = spalls.empty() ? nullptr : spall_for(Member::kRack, j);
+    double lost_width = 0;
+    if (ps && s >= ps->s_lo && s <= ps->s_hi) lost_width = std::max(lost_width, ps->width);
+    if (rs && s >= rs->s_lo && s <= rs->s_hi) lost_width = std::max(lost_width, rs->width);
+    out.face_width = contact_width - lost_width;
+    out.spalled = lost_width > 0;
+    if (pinion_tooth) {
+      out.pinion = pinion_tooth->at(s, ps ? &ps->band : nullptr);
+      if (ps) {
+        const ToothCompliance healthy = pinion_tooth->at(s, nullptr);
+        out.spalled = out.spalled || healthy.total() != out.pinion.total();
+      }
+    }
+    if (fillet) out.fillet = fillet->at(s, out.face_width);
+    if (rack_tooth) {
+      out.rack = rack_tooth->at(s, rs ? &rs->band : nullptr);
+      if (rs) {
+        const ToothCompliance healthy = rack_tooth->at(s, nullptr);
+        out.spalled = out.spalled || healthy.total() != out.rack.total();
+      }
+    }
+    return out;
+  }
+
+  const LocalParts& cached_parts(LocalCache& cache, double s, int i, int j) const {
+    const bool ps = !spalls.empty() && spall_for(Member::kPinion, i) != nullptr;
+    const bool rs = !spalls.empty() && spall_for(Member::kRack, j) != nullptr;
+    // Samples on the uniform grid land on s = A0 + k pb/N up to rounding; a
+    // key on a 1e-9 p_b grid merges those and nothing physically distinct.
+    CacheKey key{static_cast<std::int64_t>(std::llround(s / (pb * 1e-9))), ps ? i : -1, rs ? j : -1};
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+    return cache.emplace(key, local_parts(s, i, j)).first->second;
+  }
+
+  double hertz_compliance(const PairState& p, double face_width, double force) const {
+    switch (drive.effects.hertz) {
+      case HertzModel::kOff:
+        return 0.0;
+      case HertzModel::kLinear:
+        return hertz_linear_compliance(e_star, face_width);
+      case HertzModel::kWeberBanaschek: {
+        // Distances from the contact to the tooth centre lines: the pinion
+        // half thickness h of physics.md 2.1 and the rack half thickness.
+        const double rb = geo.pinion.base_radius;
+        const double alpha2 = geo.pinion.half_base_angle;
+        const double s_eff = std::max(p.s, 1e-6 * rb);
+        const double alpha1 = s_eff / rb - alpha2;
+        const double h1 = rb * ((alpha1 + alpha2) * std::cos(alpha1) - std::sin(alpha1));
+        const double h2 = geo.rack.half_thickness_at_datum -
+                          geo.contact_height_above_datum(p.s) * std::tan(a0);
+        return hertz_weber_banaschek_compliance(drive.pinion.material, drive.rack.material, face_width,
+                                                force, s_eff, std::max(h1, 1e-9), std::max(h2, 1e-9));
+      }
+    }
+    return 0.0;
+  }
+
+  // s of the pair on rack tooth j at travel X.
+  double s_of(int j, double X) const { return A0 + j * pb - X * ca; }
+  // Rack-fixed abscissa of that contact.
+  double x_of(int j, double X) const { return X + (s_of(j, X) - s_p) * ca; }
+
+  // Pairs in mesh at X (membership decided at X + side*eps so that the left
+  // and right limits at a discontinuity can both be asked for).
+  template <class Parts>
+  MeshState state(double X, int side, Parts&& parts_of, bool details) const {
+    MeshState st;
+    st.travel = X;
+    const double eps_x = 1e-9 * pitch;
+    const double xm = X + (side < 0 ? -eps_x : eps_x);
+    const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
+    const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
+    const double rb_tol = 1e-12 * pb;
+    for (int j = j_hi; j >= j_lo; --j) {  // ascending s
+      PairState p;
+      p.rack_tooth = j;
+      p.pinion_tooth = pinion_tooth_of(j);
+      p.slot = ((j % slots) + slots) % slots;
+      p.s = std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol);
+      p.s = std::clamp(p.s, s_start, s_end);
+      p.x = x_of(j, X);
+      const double x_side = x_of(j, xm);
+      p.segment = floor_div_int(x_side / span);
+      p.a = std::clamp(p.x - p.segment * span, 0.0, span);
+      p.e = neutral_axis_depth + geo.rack.dedendum + geo.contact_height_above_datum(p.s);
+      const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
+      p.pinion = lp.pinion;
+      p.fillet = lp.fillet;
+      p.rack = lp.rack;
+      p.spalled = lp.spalled;
+      p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
+      st.pairs.push_back(p);
+    }
+    solve(st, details);
+    if (drive.effects.hertz == HertzModel::kWeberBanaschek && st.pairs.size() > 1) {
+      // The Hertz term depends on each pair's force: fixed-point iteration on
+      // the load shares (monotone, converges in a few steps).
+      for (int it = 0; it < 30; ++it) {
+        double change = 0;
+        for (PairState& p : st.pairs) {
+          const LocalParts& lp = parts_of(p.s, p.pinion_tooth, p.rack_tooth);
+          const double c = hertz_compliance(p, lp.face_width, drive.load.force * p.load_share);
+          change = std::max(change, std::abs(c - p.hertz) / std::max(c, 1e-30));
+          p.hertz = c;
+        }
+        solve(st, details);
+        if (change < 1e-10) break;
+      }
+    }
+    return st;
+  }
+
+  void solve(MeshState& st, bool /*details*/) const {
+    const std::size_t n = st.pairs.size();
+    st.local_stiffness = 0;
+    for (const PairState& p : st.pairs) st.local_stiffness += 1.0 / p.local();
+    if (n == 0) {
+      st.stiffness = 0;
+      return;
+    }
+    const RackSpanModel mode = drive.effects.rack_span;
+    if (mode == RackSpanModel::kRigid || !span_model) {
+      for (PairState& p : st.pairs) {
+        p.body = 0;
+        p.load_share = (1.0 / p.local()) / st.local_stiffness;
+      }
+      st.stiffness = st.local_stiffness;
+      return;
+    }
+    for (PairState& p : st.pairs) p.body = span_model->self(p.a, p.e);
+    if (mode == RackSpanModel::kPerPair) {
+      // Seed 000: the body compliance inside each pair, pairs in parallel.
+      double k = 0;
+      for (const PairState& p : st.pairs) k += 1.0 / (p.local() + p.body);
+      for (PairState& p : st.pairs) p.load_share = (1.0 / (p.local() + p.body)) / k;
+      st.stiffness = k;
+      return;
+    }
+    // One beam shared by all pairs: C = diag(c_j) + C_b; K = 1^T C^-1 1.
+    using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
+    using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 8, 1>;
+    if (n > 8) throw std::runtime_error("more than 8 pairs in mesh: not supported");
+    Mat C(n, n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const PairState& pj = st.pairs[j];
+      C(j, j) = pj.local() + pj.body;
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const PairState& pk = st.pairs[k];
+        const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        C(j, k) = c;
+        C(k, j) = c;
+      }
+    }
+    const Vec f = C.llt().solve(Vec::Ones(n));
+    const double K = f.sum();
+    if (!(K > 0) || !std::isfinite(K)) {
+      throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                               std::to_string(st.travel));
+    }
+    st.stiffness = K;
+    for (std::size_t j = 0; j < n; ++j) st.pairs[j].load_share = f[j] / K;
+  }
+
+  std::vector<double> breakpoints(double lo, double hi) const {
+    std::vector<double> out;
+    const int j_lo = static_cast<int>(std::floor((s_start + lo * ca - A0) / pb)) - 1;
+    const int j_hi = static_cast<int>(std::ceil((s_end + hi * ca - A0) / pb)) + 1;
+    const double tol = 1e-12 * std::max(span, pitch);
+    auto in_range = [&](double X) { return X >= lo - tol && X <= hi + tol; };
+    for (int j = j_lo; j <= j_hi; ++j) {
+      // Pair j enters/leaves where s_j = s_start or s_end.
+      for (double s_lim : {s_start, s_end}) {
+        const double X = (A0 + j * pb - s_lim) / ca;
+        if (in_range(X)) out.push_back(std::clamp(X, lo, hi));
+      }
+      // Pair j crosses a support where x_j = k * span, while in mesh.
+      if (span_model) {
+        const double x_lo = x_of(j, lo), x_hi = x_of(j, hi);
+        const int k_lo = static_cast<int>(std::ceil(std::min(x_lo, x_hi) / span - 1e-12));
+        const int k_hi = static_cast<int>(std::floor(std::max(x_lo, x_hi) / span + 1e-12));
+        for (int k = k_lo; k <= k_hi; ++k) {
+          // x_j(X) = X sin^2 a0 + (A_j - s_P) cos a0.
+          const double X = (k * span - (A0 + j * pb - s_p) * ca) / (sa * sa);
+          if (!in_range(X)) continue;
+          const double s = s_of(j, X);
+          if (s >= s_start - tol && s <= s_end + tol) out.push_back(std::clamp(X, lo, hi));
+        }
+      }
+    }
+    std::sort(out.begin(), out.end());
+    std::vector<double> unique;
+    for (double X : out) {
+      if (unique.empty() || X - unique.back() > 1e-9 * pitch) unique.push_back(X);
+    }
+    return unique;
+  }
+};
+
+MeshStiffnessModel::MeshStiffnessModel(const Drive& drive) : impl_(std::make_unique<Impl>(drive)) {}
+MeshStiffnessModel::~MeshStiffnessModel() = default;
+MeshStiffnessModel::MeshStiffnessModel(MeshStiffnessModel&&) noexcept = default;
+MeshStiffnessModel& MeshStiffnessModel::operator=(MeshStiffnessModel&&) noexcept = default;
+
+const Drive& MeshStiffnessModel::drive() const { return impl_->drive; }
+const MeshGeometry& MeshStiffnessModel::geometry() const { return impl_->geo; }
+const std::vector<std::string>& MeshStiffnessModel::warnings() const { return impl_->warnings; }
+
+MeshState MeshStiffnessModel::at(double travel, int side) const {
+  const Impl& im = *impl_;
+  return im.state(
+      travel, side, [&](double s, int i, int j) { return im.local_parts(s, i, j); }, true);
+}
+
+double MeshStiffnessModel::stiffness(double travel, int side) const { return at(travel, side).stiffness; }
+
+std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const {
+  return impl_->breakpoints(lo, hi);
+}
+
+namespace {
+
+// Integral over [x1, x2] of the Lagrange polynomial through the given points
+// (2, 3 or 4 of them, x1 and x2 among them), by 3-point Gauss-Legendre: exact
+// for cubics.
+double interval_integral(const double* xs, const double* ys, int n, double x1, double x2) {
+  static const double gx[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+  static const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  const double mid = 0.5 * (x1 + x2), half = 0.5 * (x2 - x1);
+  double sum = 0;
+  for (int g = 0; g < 3; ++g) {
+    const double x = mid + half * gx[g];
+    double p = 0;
+    for (int a = 0; a < n; ++a) {
+      double l = 1;
+      for (int b = 0; b < n; ++b) {
+        if (b != a) l *= (x - xs[b]) / (xs[a] - xs[b]);
+      }
+      p += ys[a] * l;
+    }
+    sum += gw[g] * p;
+  }
+  return sum * half;
+}
+
+// Minimizes f on [lo, hi] by golden-section search (f unimodal there).
+template <class F>
+std::pair<double, double> golden_min(F&& f, double lo, double hi, double x_tol) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = lo, b = hi;
+  double c = b - g * (b - a), d = a + g * (b - a);
+  double fc = f(c), fd = f(d);
+  for (int it = 0; it < 200 && (b - a) > x_tol; ++it) {
+    if (fc < fd) {
+      b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
+    } else {
+      a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
+    }
+  }
+  return fc < fd ? std::make_pair(c, fc) : std::make_pair(d, fd);
+}
+
+}  // namespace
+
+StiffnessCurve MeshStiffnessModel::curve() const {
+  const Impl& im = *impl_;
+  StiffnessCurve out;
+  out.warnings = im.warnings;
+  out.max_pairs = im.slots;
+  const double l = im.span;
+  const int N = im.drive.numerics.positions_per_period;
+  const double dX = im.pitch / N;
+  LocalCache cache;
+  cache.reserve(static_cast<std::size_t>(4 * N + 64));
+  auto parts = [&](double s, int i, int j) -> const LocalParts& { return im.cached_parts(cache, s, i, j); };
+
+  out.breakpoints = im.breakpoints(0.0, l);
+  // Interior discontinuities give two samples (left and right limit); the
+  // span ends give one each.
+  struct Probe {
+    double X;
+    int side;
+  };
+  std::vector<Probe> probes;
+  const int n_uniform = static_cast<int>(std::floor(l / dX + 1e-9));
+  probes.reserve(static_cast<std::size_t>(n_uniform) + 2 * out.breakpoints.size() + 4);
+  const double tol = 1e-9 * im.pitch;
+  auto near_break = [&](double X) {
+    auto it = std::lower_bound(out.breakpoints.begin(), out.breakpoints.end(), X - tol);
+    return it != out.breakpoints.end() && *it <= X + tol;
+  };
+  for (int i = 0; i <= n_uniform; ++i) {
+    const double X = std::min(i * dX, l);
+    if (!near_break(X)) probes.push_back({X, X >= l - tol ? -1 : +1});
+  }
+  if (l - n_uniform * dX > tol && !near_break(l)) probes.push_back({l, -1});
+  for (double xb : out.breakpoints) {
+    if (xb > tol) probes.push_back({xb, -1});
+    if (xb < l - tol) probes.push_back({xb, +1});
+  }
+  std::sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& c) {
+    return a.X < c.X || (a.X == c.X && a.side < c.side);
+  });
+
+  out.samples.reserve(probes.size());
+  for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts, true));
+
+  // Smooth pieces: a left-limit sample closes a piece.
+  const std::size_t n = out.samples.size();
+  std::vector<int> piece(n, 0);
+  for (std::size_t i = 1; i < n; ++i) {
+    const bool split = probes[i - 1].side < 0 && probes[i].X - probes[i - 1].X <= tol;
+    piece[i] = piece[i - 1] + (split ? 1 : 0);
+  }
+
+  // Mean: piecewise cubic interpolation within each smooth piece.
+  double integral = 0;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (piece[i] != piece[i + 1]) continue;
+    double xs[4], ys[4];
+    int m = 0;
+    const std::size_t first = (i > 0 && piece[i - 1] == piece[i]) ? i - 1 : i;
+    const std::size_t last = (i + 2 < n && piece[i + 2] == piece[i]) ? i + 2 : i + 1;
+    for (std::size_t k = first; k <= last; ++k) {
+      xs[m] = out.samples[k].travel;
+      ys[m] = out.samples[k].stiffness;
+      ++m;
+    }
+    integral += interval_integral(xs, ys, m, out.samples[i].travel, out.samples[i + 1].travel);
+  }
+  out.k_mean = integral / l;
+
+  // Min and max: every one-sided limit is a sample; interior extrema are refined.
+  std::size_t i_min = 0, i_max = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (out.samples[i].stiffness < out.samples[i_min].stiffness) i_min = i;
+    if (out.samples[i].stiffness > out.samples[i_max].stiffness) i_max = i;
+  }
+  out.k_min = out.samples[i_min].stiffness;
+  out.travel_at_min = out.samples[i_min].travel;
+  out.k_max = out.samples[i_max].stiffness;
+  out.travel_at_max = out.samples[i_max].travel;
+  auto k_at = [&](double X) { return im.state(X, 0, parts, false).stiffness; };
+  const double x_tol = 1e-7 * im.pitch;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (piece[i - 1] != piece[i] || piece[i + 1] != piece[i]) continue;
+    const double k0 = out.samples[i - 1].stiffness, k1 = out.samples[i].stiffness,
+                 k2 = out.samples[i + 1].stiffness;
+    const double lo = out.samples[i - 1].travel, hi = out.samples[i + 1].travel;
+    // Candidates whose sampled value is close to the current extreme.
+    if (k1 <= k0 && k1 <= k2 && k1 <= out.k_min * (1 + 1e-3)) {
+      auto [x, k] = golden_min(k_at, lo, hi, x_tol);
+      if (k < out.k_min) {
+        out.k_min = k;
+        out.travel_at_min = x;
+      }
+    }
+    if (k1 >= k0 && k1 >= k2 && k1 >= out.k_max * (1 - 1e-3)) {
+      auto [x, k] = golden_min([&](double X) { return -k_at(X); }, lo, hi, x_tol);
+      if (-k > out.k_max) {
+        out.k_max = -k;
+        out.travel_at_max = x;
+      }
+    }
+  }
+  out.k_fluctuation = out.k_mean > 0 ? (out.k_max - out.k_min) / out.k_mean : 0.0;
+  return out;
+}
+
+}  // namespace rackopt

@@ -1,0 +1,99 @@
+// Time-varying mesh stiffness of a rack drive over the travel along one rack
+// span: the pairs in mesh at each position, each pair's local compliance
+// (pinion tooth, fillet foundation, Hertz, rack tooth), the rack body shared by
+// all pairs through one flexibility matrix, the mesh stiffness and each pair's
+// load share (physics.md 6.3, 7.2).
+//
+// Example:
+//   Drive drive = load_problem("problems/rack_railway.yaml");
+//   MeshStiffnessModel model(drive);          // geometry, tooth tables, checks
+//   StiffnessCurve curve = model.curve();     // whole travel over one span
+//   std::cout << curve.k_min << " N/m at X = " << curve.travel_at_min << " m\n";
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/stiffness/tooth_compliance.hpp"
+
+namespace rackopt {
+
+// One tooth pair in mesh at one travel position. Compliances in m/N.
+struct PairState {
+  int rack_tooth = 0;    // global rack tooth index (0 = first tooth of the studied segment)
+  int pinion_tooth = 0;  // 0..z-1; pinion tooth 0 meshes with rack tooth 0
+  int slot = 0;          // column in the CSV: rack_tooth mod (floor(eps)+1), stable while in mesh
+  double s = 0;          // LOA coordinate of the contact [m]
+  double x = 0;          // rack-fixed abscissa of the contact [m] (global)
+  int segment = 0;       // rack segment that carries the contact
+  double a = 0;          // abscissa within that segment [m]
+  double e = 0;          // contact height above the rack neutral axis [m]
+  ToothCompliance pinion;
+  double fillet = 0;
+  double hertz = 0;
+  ToothCompliance rack;
+  double body = 0;       // diagonal of the body flexibility matrix (own load on own contact)
+  bool spalled = false;  // a spall changes this pair at this position
+  double local() const { return pinion.total() + fillet + hertz + rack.total(); }
+  double load_share = 0;  // f_j / F
+};
+
+// Mesh state at one travel position X.
+struct MeshState {
+  double travel = 0;         // X [m]
+  double stiffness = 0;      // K_mesh [N/m]
+  double local_stiffness = 0;  // sum of 1/local compliance: the mesh with a rigid rack body [N/m]
+  std::vector<PairState> pairs;  // ordered by s
+};
+
+struct StiffnessCurve {
+  // Samples sorted by travel. At a discontinuity (a pair enters or leaves, a
+  // contact crosses a support) two samples share the travel value: the left
+  // and the right limit, in that order.
+  std::vector<MeshState> samples;
+  std::vector<double> breakpoints;  // travel positions of the discontinuities in [0, span]
+  double k_min = 0, k_max = 0, k_mean = 0;
+  double travel_at_min = 0, travel_at_max = 0;
+  double k_fluctuation = 0;  // (k_max - k_min) / k_mean
+  int max_pairs = 0;         // CSV slot count
+  std::vector<std::string> warnings;
+};
+
+class MeshStiffnessModel {
+ public:
+  // Builds the geometry and the tooth models and checks the spalls. Throws
+  // DesignError for an impossible design or fault.
+  explicit MeshStiffnessModel(const Drive& drive);
+  ~MeshStiffnessModel();
+  MeshStiffnessModel(MeshStiffnessModel&&) noexcept;
+  MeshStiffnessModel& operator=(MeshStiffnessModel&&) noexcept;
+
+  const Drive& drive() const;
+  const MeshGeometry& geometry() const;
+  const std::vector<std::string>& warnings() const;
+
+  // State at travel X. side = -1 / +1 picks the left / right limit when X is
+  // exactly at a discontinuity (0: right limit).
+  MeshState at(double travel, int side = 0) const;
+  // Only K_mesh at X (no per-pair details kept).
+  double stiffness(double travel, int side = 0) const;
+
+  // The whole travel over one span, sampled at numerics.positions_per_period
+  // per mesh period plus every discontinuity; min, max (refined inside smooth
+  // pieces) and mean (piecewise cubic quadrature) do not depend on where the
+  // uniform samples fall.
+  StiffnessCurve curve() const;
+
+  // Travel positions in [lo, hi] where the number of pairs changes or a
+  // contact crosses a support.
+  std::vector<double> breakpoints(double lo, double hi) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rackopt

@@ -1,0 +1,189 @@
+// Properties of the assembled mesh stiffness curve (issue 2, section 8):
+// positive and finite everywhere, continuous inside a zone and jumping only at
+// zone transitions / support crossings, min/max/mean independent of where the
+// uniform samples fall, load shares summing to one, and the coupled beam
+// giving the right limits.
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <Eigen/Dense>
+
+#include "rackopt/stiffness/rack_span.hpp"
+
+#include "test_drives.hpp"
+
+namespace rackopt {
+namespace {
+
+TEST(MeshStiffnessCurve, PositiveFiniteAndLoadSharesSumToOne) {
+  for (const char* file : {"rack_railway.yaml", "rack_railway_paper.yaml", "ship_lift.yaml", "large_module.yaml"}) {
+    SCOPED_TRACE(file);
+    const MeshStiffnessModel model(test::problem(file));
+    const StiffnessCurve c = model.curve();
+    ASSERT_GT(c.samples.size(), 100u);
+    for (const MeshState& s : c.samples) {
+      ASSERT_TRUE(std::isfinite(s.stiffness)) << "X = " << s.travel;
+      ASSERT_GT(s.stiffness, 0.0) << "X = " << s.travel;
+      ASSERT_GE(s.pairs.size(), 1u);
+      double share = 0;
+      for (const PairState& p : s.pairs) {
+        EXPECT_GT(p.local(), 0.0);
+        share += p.load_share;
+      }
+      EXPECT_NEAR(share, 1.0, 1e-12) << "X = " << s.travel;
+    }
+    EXPECT_LE(c.k_min, c.k_mean);
+    EXPECT_GE(c.k_max, c.k_mean);
+  }
+}
+
+// The rigid-body mesh is periodic in travel with the rack pitch, and the
+// number of pairs alternates between floor(eps) and floor(eps)+1 exactly at
+// the zone lengths reported by the geometry.
+TEST(MeshStiffnessCurve, RigidBodyZonesMatchGeometry) {
+  Drive d = test::problem("rack_railway.yaml");
+  d.effects.rack_span = RackSpanModel::kRigid;
+  const MeshStiffnessModel model(d);
+  const StiffnessCurve c = model.curve();
+  const double p = M_PI * d.pinion.module;
+  // Travel spent with n pairs over whole periods, from the samples.
+  std::map<int, double> length;
+  for (std::size_t i = 0; i + 1 < c.samples.size(); ++i) {
+    const double dx = c.samples[i + 1].travel - c.samples[i].travel;
+    if (dx <= 0) continue;
+    length[static_cast<int>(c.samples[i].pairs.size())] += dx;
+  }
+  const double periods = d.rack.span / p;
+  for (const Zone& z : model.geometry().zones) {
+    EXPECT_NEAR(length[z.pairs] / periods, z.length_travel, 1e-6 * p) << z.pairs << " pairs";
+  }
+}
+
+// Within a smooth piece neighbouring samples differ by no more than the local
+// slope allows; across a breakpoint the curve may jump. The slope bound is
+// taken from the steepest change seen between uniform samples, times 3.
+TEST(MeshStiffnessCurve, ContinuousInsideZonesJumpsOnlyAtBreakpoints) {
+  const MeshStiffnessModel model(test::problem("rack_railway.yaml"));
+  const StiffnessCurve c = model.curve();
+  const double p = M_PI * model.drive().pinion.module;
+  const double h = p / model.drive().numerics.positions_per_period;
+  double max_jump_at_break = 0;
+  double max_step_inside = 0;
+  for (std::size_t i = 0; i + 1 < c.samples.size(); ++i) {
+    const double dx = c.samples[i + 1].travel - c.samples[i].travel;
+    const double dk = std::abs(c.samples[i + 1].stiffness - c.samples[i].stiffness);
+    if (dx == 0) {
+      max_jump_at_break = std::max(max_jump_at_break, dk);
+      // Two samples at one travel value must be a listed breakpoint.
+      EXPECT_TRUE(std::any_of(c.breakpoints.begin(), c.breakpoints.end(),
+                              [&](double b) { return std::abs(b - c.samples[i].travel) < 1e-9; }));
+    } else {
+      ASSERT_LE(dx, h * (1 + 1e-9));
+      max_step_inside = std::max(max_step_inside, dk / dx * h);
+    }
+  }
+  // Pairs entering or leaving change the stiffness by far more than one
+  // uniform step inside a zone does.
+  EXPECT_GT(max_jump_at_break, 5 * max_step_inside);
+  // A fine resampling inside one piece never jumps: check the first piece.
+  const double x0 = c.breakpoints.at(1), x1 = c.breakpoints.at(2);
+  double prev = model.stiffness(x0, +1);
+  const int n = 400;
+  for (int i = 1; i < n; ++i) {
+    const double x = x0 + (x1 - x0) * i / n;
+    const double k = model.stiffness(x);
+    EXPECT_LT(std::abs(k - prev), 2 * max_step_inside * (x1 - x0) / n / h + 1e-9 * k) << "x = " << x;
+    prev = k;
+  }
+}
+
+// min, max and mean must not depend on where the uniform samples fall.
+TEST(MeshStiffnessCurve, ExtremaAndMeanIndependentOfSampling) {
+  for (const char* file : {"rack_railway.yaml", "ship_lift.yaml"}) {
+    SCOPED_TRACE(file);
+    Drive d = test::problem(file);
+    std::vector<StiffnessCurve> curves;
+    for (int n : {37, 100, 163}) {
+      d.numerics.positions_per_period = n;
+      curves.push_back(MeshStiffnessModel(d).curve());
+    }
+    for (const StiffnessCurve& c : curves) {
+      EXPECT_NEAR(c.k_min / curves[1].k_min, 1.0, 1e-7);
+      EXPECT_NEAR(c.k_max / curves[1].k_max, 1.0, 1e-7);
+      EXPECT_NEAR(c.k_mean / curves[1].k_mean, 1.0, 2e-6);
+    }
+  }
+}
+
+// With a rigid rack body the mean over one mesh period does not depend on the
+// phase of the teeth relative to the supports (the curve is periodic).
+TEST(MeshStiffnessCurve, RigidMeanIndependentOfPhase) {
+  Drive d = test::problem("rack_railway.yaml");
+  d.effects.rack_span = RackSpanModel::kRigid;
+  const double p = M_PI * d.pinion.module;
+  d.rack.span = 3 * p;  // three whole periods
+  std::vector<double> means;
+  for (double phase : {0.5, 0.13, 0.77}) {
+    d.rack.tooth_offset = phase * p;
+    means.push_back(MeshStiffnessModel(d).curve().k_mean);
+  }
+  EXPECT_NEAR(means[1] / means[0], 1.0, 1e-7);
+  EXPECT_NEAR(means[2] / means[0], 1.0, 1e-7);
+}
+
+// Rack body on: the coupled stiffness is below the rigid-body one everywhere,
+// the seed-000 per-pair model is stiffer than the coupled one when two or more
+// pairs share the beam (it counts the body once per pair), and with one pair
+// both agree.
+TEST(MeshStiffnessCurve, CoupledBodyVersusPerPairAndRigid) {
+  Drive d = test::problem("rack_railway.yaml");
+  const MeshStiffnessModel coupled(d);
+  d.effects.rack_span = RackSpanModel::kPerPair;
+  const MeshStiffnessModel per_pair(d);
+  for (double x : {0.3, 0.71, 1.2, 1.93}) {
+    const MeshState a = coupled.at(x);
+    const MeshState b = per_pair.at(x);
+    EXPECT_LT(a.stiffness, a.local_stiffness);
+    ASSERT_EQ(a.pairs.size(), b.pairs.size());
+    if (a.pairs.size() == 1) {
+      EXPECT_NEAR(a.stiffness / b.stiffness, 1.0, 1e-12);
+    } else {
+      EXPECT_GT(b.stiffness, a.stiffness);
+    }
+  }
+}
+
+// Coupled solve against a direct inverse of C = diag(local + body) + C_b built
+// here from the reported contact positions and the beam model itself.
+TEST(MeshStiffnessCurve, CoupledSolveMatchesDirectInverse) {
+  const Drive d = test::problem("rack_railway.yaml");
+  const MeshStiffnessModel model(d);
+  const RackSpanCompliance beam(d.rack, d.pinion.pressure_angle, d.effects);
+  for (double x : {0.05, 1.111, 2.3}) {
+    const MeshState s = model.at(x);
+    const std::size_t n = s.pairs.size();
+    ASSERT_GE(n, 2u);
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);
+    for (std::size_t j = 0; j < n; ++j) {
+      for (std::size_t k = 0; k < n; ++k) {
+        const PairState& a = s.pairs[j];
+        const PairState& b = s.pairs[k];
+        if (a.segment == b.segment) C(j, k) = beam.influence(a.a, a.e, b.a, b.e);
+      }
+      C(j, j) += s.pairs[j].local();
+    }
+    const Eigen::MatrixXd Cinv = C.inverse();
+    EXPECT_NEAR(Cinv.sum() / s.stiffness, 1.0, 1e-10);
+    for (std::size_t j = 0; j < n; ++j) {
+      EXPECT_NEAR(Cinv.row(j).sum() / Cinv.sum(), s.pairs[j].load_share, 1e-10);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rackopt

@@ -1,0 +1,55 @@
+// Seed 001 trends for its spall levels (normal, mild 5 mm, moderate 10 mm,
+// severe 15 mm; depth 2 mm, width 5 mm) on problems/large_module.yaml:
+// the stiffness dips only while the spalled tooth is in mesh, the dip lasts
+// longer as the spall grows, and the mean falls monotonically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "test_drives.hpp"
+
+namespace rackopt {
+namespace {
+
+TEST(Seed001Spall, DipOnlyWhileSpalledToothInMeshLongerAndDeeperOnAverage) {
+  const StiffnessCurve normal = MeshStiffnessModel(test::problem("large_module.yaml", {"variant=normal"})).curve();
+  double prev_mean = normal.k_mean;
+  double prev_dip_length = 0;
+  for (const char* level : {"mild", "moderate", "severe"}) {
+    SCOPED_TRACE(level);
+    const Drive d = test::problem("large_module.yaml", {std::string("variant=") + level});
+    ASSERT_FALSE(d.spalls.empty());
+    const MeshStiffnessModel model(d);
+    const StiffnessCurve c = model.curve();
+    ASSERT_EQ(c.samples.size(), normal.samples.size());
+    double dip_length = 0;
+    for (std::size_t i = 0; i < c.samples.size(); ++i) {
+      const MeshState& s = c.samples[i];
+      ASSERT_DOUBLE_EQ(s.travel, normal.samples[i].travel);
+      bool spalled_tooth_in_mesh = false;
+      for (const PairState& p : s.pairs) {
+        const Spall& sp = d.spalls.front();
+        if ((sp.member == Member::kPinion && p.pinion_tooth == sp.tooth) ||
+            (sp.member == Member::kRack && p.rack_tooth == sp.tooth)) {
+          spalled_tooth_in_mesh = true;
+        }
+      }
+      if (!spalled_tooth_in_mesh) {
+        EXPECT_DOUBLE_EQ(s.stiffness, normal.samples[i].stiffness) << "X = " << s.travel;
+      } else {
+        EXPECT_LE(s.stiffness, normal.samples[i].stiffness * (1 + 1e-12));
+      }
+      if (i + 1 < c.samples.size() && s.stiffness < normal.samples[i].stiffness * (1 - 1e-9)) {
+        dip_length += c.samples[i + 1].travel - s.travel;
+      }
+    }
+    EXPECT_GT(dip_length, prev_dip_length);
+    EXPECT_LT(c.k_mean, prev_mean);
+    prev_dip_length = dip_length;
+    prev_mean = c.k_mean;
+  }
+}
+
+}  // namespace
+}  // namespace rackopt
