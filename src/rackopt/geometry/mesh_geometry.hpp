@@ -24,7 +24,10 @@ struct PinionGeometry {
   double tip_thickness = 0;     // arc tooth thickness at r_a [m]
   double root_angle = 0;        // theta_f (Sainsot), half angle of the tooth at the root circle [rad]
   double cutter_tip_radius = 0; // rho = rho_a0* m as actually used [m]
-  double cutter_tip_radius_max = 0;  // largest rho whose round stays below the working depth
+  double cutter_tip_radius_max = 0;  // largest rho whose round stays below the working depth:
+                                     // c* m/(1 - sin a0), c* = h_a0* - h_a2* (0 if c* < 0)
+  double cutter_tip_flat_half_width = 0;  // w_flat on the cutter (>= 0)
+  double undercut_teeth_limit = 0;  // z_min: fewer teeth (same x, same cutter) are undercut
   bool undercut = false;        // the cutter tip cuts into the involute
 };
 
@@ -48,6 +51,8 @@ struct ContactPath {
   double base_pitch = 0;     // p_b = pi m cos a0
   double contact_ratio = 0;  // (s_end - s_start) / p_b
   double contact_ratio_geometric = 0;  // with interference ignored: (s_end - s_A)/p_b
+  // Both contact ratios are snapped to the nearest integer when within 1e-9 of
+  // it, so a design built for eps = 2 is reported as exactly 2.
 };
 
 // The n-pair zones of one mesh period. With n = floor(eps) the period holds an
@@ -76,14 +81,42 @@ struct MeshGeometry {
   double pressure_angle = 0;
   double clearance = 0;
   double profile_shift_length = 0;  // x m
+  double backlash = 0;              // circumferential backlash on the pitch line, 2 Delta tan a0 [m]
 };
+
+// One change of the number of pairs in contact during a mesh period.
+struct PairCountChange {
+  double s = 0;     // LOA coordinate of the reference pair where the change happens [m]
+  int pairs = 0;    // number of pairs in contact from here on (until the next change)
+};
+
+// Where the number of pairs in contact changes during one mesh period.
+// Convention: a pair is in contact while s_start <= s < s_end (half open, so
+// the counts match the zone lengths). The reference pair runs over one period
+// s in [s_start, s_start + p_b); the others sit at s + j p_b.
+// Returns the changes in ascending s; the first is always at s_start (the
+// reference pair enters) with n+1 pairs, the second at s_start + (eps - n) p_b
+// where a pair leaves at the pinion tip and n pairs remain (n = floor eps).
+// When eps is an integer only the first entry is returned (n pairs throughout).
+std::vector<PairCountChange> pair_count_changes(const MeshGeometry& geometry);
+
+// LOA coordinates of all pairs in contact when one pair is at s_reference (any
+// value): the set {s_reference + j p_b} within [s_start, s_end), ascending.
+std::vector<double> contact_positions(const MeshGeometry& geometry, double s_reference);
 
 // Builds the geometry. Throws DesignError with a code for an impossible design:
 //   "pointed_tooth"           pinion tip thickness <= 0 (or rack tip half thickness <= 0)
 //   "no_involute"             form radius >= tip radius
 //   "contact_ratio_below_one" contact ratio < 1 (after interference limits when enabled)
 //   "cutter_tip_radius"       cutter tip rounds overlap (no flat left on the cutter tip)
-//   "rack_tip_below_pinion_root" / other clear codes for cases found on the way.
+//   "pointed_cutter"          cutter tooth pointed even with a sharp tip (h_a0* too large)
+//   "rack_root_closed"        rack space width at the rack root line <= 0
+//   "no_root_circle"          pinion root radius <= 0
+//   "negative_clearance"      Delta < 0: the teeth would overlap (Delta = 0 is zero backlash)
+//   "rack_tip_below_pinion_root"  rack tip line deeper into the pinion than its root circle
+//   "pinion_tip_below_rack_root"  pinion tip circle reaches below the rack root line
+// Bad input (module <= 0, z < 1, pressure angle outside (0, 45 deg], negative
+// coefficients, non-finite values) throws InputError with the key path.
 // Undercut and a cutter tip radius above the working-depth limit are warnings,
 // and move s_start when effects.interference_limit is on.
 MeshGeometry build_mesh_geometry(const Drive& drive);
