@@ -1,0 +1,51 @@
+// Problem files (YAML) -> rackopt::Drive, with errors that say where and why.
+//
+// docs/yaml.md is the user-facing reference of every key (kind, default unit,
+// default value, allowed range). The key paths are a contract: studies and
+// `--set` address them.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/core/error.hpp"
+#include "rackopt/units/units.hpp"
+
+namespace rackopt {
+
+// Reads the problem file at `path` and returns the drive in SI units.
+// `overrides` are `--set` assignments "key.path=value" applied in order over
+// the file before validation (docs/yaml.md "Overrides"); `variant=<name>`
+// selects one of the file's `variants`.
+// Throws InputError (file:line:column, dotted key path, what is allowed) for
+// anything the file or an override gets wrong; values from overrides carry the
+// file name "<command line>". The file not being readable is an InputError too.
+// Everything the Drive leaves as "0 = not given" is filled in: rack face width,
+// body width, tooth offset, the rack section, the bore radius (0.5 r_f; left
+// 0 only when r_f <= 0, which the geometry rejects).
+Drive load_problem(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Same, from text; `name_for_messages` is the file name used in marks and
+// (its stem) the default drive name.
+Drive load_problem_text(const std::string& yaml_text, const std::string& name_for_messages,
+                        const std::vector<std::string>& overrides = {});
+
+// Names of the variants a problem file defines (file order); empty if none.
+// Throws InputError like load_problem.
+std::vector<std::string> problem_variants(const std::string& path);
+
+// Section properties of a rectangular rack body `width` x `height` [m]:
+// A = b h, I = b h^3 / 12, shear area = A / 1.2 (rectangle, Timoshenko
+// kappa = 5/6), neutral axis h/2 below the tooth root line.
+RackSection rectangular_rack_section(double width, double height);
+
+// The quantity kind of a numeric problem key, so that other inputs (study
+// bounds, sweeps) parse its values the same way. Accepts concrete paths
+// ("materials.steel.E", "faults[0].depth"). nullopt for keys that are not
+// numbers (names, on/off switches, choices) and for unknown keys.
+std::optional<QuantityKind> problem_key_kind(std::string_view key_path);
+
+}  // namespace rackopt
