@@ -43,7 +43,7 @@ struct Converter {
     return SourceMark{file, m.line + 1, m.column + 1};
   }
 
-  MarkedNode convert(const YAML::Node& node, const SourceMark& fallback, int depth) {
+  MarkedNode convert(const YAML::Node& node, const SourceMark& fallback, int depth, const std::string& path) {
     if (++nodes > kMaxTreeNodes) {
       throw InputError(fallback, "",
                        "the document expands to more than " + std::to_string(kMaxTreeNodes) +
@@ -68,7 +68,10 @@ struct Converter {
         break;
       case YAML::NodeType::Sequence:
         out.type = MarkedNode::Type::kSequence;
-        for (const auto& item : node) out.items.push_back(convert(item, out.mark, depth + 1));
+        for (const auto& item : node) {
+          const std::string item_path = path + "[" + std::to_string(out.items.size()) + "]";
+          out.items.push_back(convert(item, out.mark, depth + 1, item_path));
+        }
         break;
       case YAML::NodeType::Map:
         out.type = MarkedNode::Type::kMap;
@@ -79,20 +82,21 @@ struct Converter {
             throw InputError(key_mark, "", std::string("a key must be a plain name, found ") + found);
           }
           const std::string key = kv.first.Scalar();
+          const std::string key_path = path.empty() ? key : path + "." + key;
           if (key == "<<") {
-            throw InputError(key_mark, key,
+            throw InputError(key_mark, key_path,
                              "YAML merge keys '<<' are not supported (yaml-cpp 0.7 would keep '<<' as "
                              "an ordinary key); write the keys out, or use 'variants' for alternatives");
           }
           for (const auto& seen : out.entries) {
             if (seen.key == key) {
-              throw InputError(key_mark, key,
+              throw InputError(key_mark, key_path,
                                "duplicate key '" + key + "' (first given at " + to_string(seen.key_mark) +
                                    "); each key may appear once in a map");
             }
           }
           ++nodes;  // the key itself
-          out.entries.push_back(MarkedEntry{key, key_mark, convert(kv.second, key_mark, depth + 1)});
+          out.entries.push_back(MarkedEntry{key, key_mark, convert(kv.second, key_mark, depth + 1, key_path)});
         }
         break;
     }
@@ -186,7 +190,7 @@ MarkedNode parse_marked_yaml(const std::string& text, const std::string& file, b
     throw InputError(converter.mark_of(documents[1].Mark()), "",
                      "more than one YAML document ('---'); a problem file holds exactly one");
   }
-  return converter.convert(documents.front(), start, 0);
+  return converter.convert(documents.front(), start, 0, "");
 }
 
 std::string override_key(const std::string& assignment) {
