@@ -221,7 +221,7 @@ MeshGeometry build_mesh_geometry(const Drive& drive) {
   } else {
     path.s_start = path.s_rack_tip;
     path.start_limited_by = "rack_tip";
-    if (path.s_rack_tip < path.s_form) {
+    if (path.s_form > path.s_rack_tip + kFormTieRelative * path.base_pitch) {
       g.warnings.push_back("interference ignored as requested: the rack tip meets the pinion at s = " +
                            mm(path.s_rack_tip) + ", below the form circle (s = " +
                            mm(path.s_form) + ")");

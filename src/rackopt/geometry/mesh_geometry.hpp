@@ -75,7 +75,8 @@ struct MeshGeometry {
   // Height of the contact at LOA coordinate s above the rack datum line:
   // h = r sin^2 a0 - s sin a0 + x m + Delta (physics.md 7.2).
   double contact_height_above_datum(double s) const;
-  // Radius on the pinion of the contact at s: sqrt(r_b^2 + s^2).
+  // Radius on the pinion of the contact at s: sqrt(r_b^2 + s^2) (no clamping;
+  // for s < 0 this is not a point of the involute, see build_mesh_geometry).
   double pinion_contact_radius(double s) const;
 
   double pressure_angle = 0;
@@ -118,7 +119,10 @@ std::vector<double> contact_positions(const MeshGeometry& geometry, double s_ref
 // Bad input (module <= 0, z < 1, pressure angle outside (0, 45 deg], negative
 // coefficients, non-finite values) throws InputError with the key path.
 // Undercut and a cutter tip radius above the working-depth limit are warnings,
-// and move s_start when effects.interference_limit is on.
+// and move s_start when effects.interference_limit is on (the form circle counts
+// only when it lies more than 1e-4 p_b beyond s_A, so the rounded standard
+// rho* = 0.38 does not move the start). With the limit off, s_start = s_A may be
+// negative: callers evaluate such contacts at the base circle (clamp s to 0).
 MeshGeometry build_mesh_geometry(const Drive& drive);
 
 }  // namespace rackopt
