@@ -147,6 +147,10 @@ TEST(RackTooth, ContactHeightFollowsThePathOfContact) {
   EXPECT_NEAR(tooth.contact_height(sP), 1.25 * m + x * m + delta, 1e-15);
   EXPECT_NEAR(tooth.contact_height(sA), 2.25 * m, 1e-15);
   EXPECT_DOUBLE_EQ(tooth.at(sA).total(), tooth.at_height(2.25 * m).total());
+  // Same height as the geometry module's own function (kept in step by this check).
+  for (double sv : {0.0, sA, sP, 0.07}) {
+    EXPECT_NEAR(tooth.contact_height(sv), s.g.rack.dedendum + s.g.contact_height_above_datum(sv), 1e-15);
+  }
   // Monotone: the lower the pinion contact (larger s), the lower on the rack.
   double last = 1.0;
   for (double sv = sA; sv < sA + 0.05; sv += 0.005) {
