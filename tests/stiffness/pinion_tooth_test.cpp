@@ -17,7 +17,9 @@
 #include <vector>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
+#include "rackopt/stiffness/rack_tooth.hpp"
 
 namespace rackopt {
 namespace {
@@ -383,6 +385,55 @@ TEST(PinionTooth, HardCasesFiniteAndPositive) {
       EXPECT_GE(c.axial, 0.0);
     }
   }
+}
+
+}  // namespace
+}  // namespace rackopt
+
+// ---- with the real geometry module ---------------------------------------------
+
+namespace rackopt {
+namespace {
+
+TEST(ToothModelsOnBuiltGeometry, StartAndTipOfActiveProfileFiniteAndPositive) {
+  // The same hard cases through build_mesh_geometry, evaluated exactly at
+  // path.s_start and path.s_end. Designs the geometry rejects (DesignError)
+  // are skipped: they never reach the stiffness models.
+  struct Case { int z; double a0, x, b; };
+  int evaluated = 0;
+  for (const Case& k : {Case{8, 20, 0.0, 0.005}, Case{8, 20, -0.5, 0.5}, Case{150, 20, 0.0, 0.05},
+                        Case{20, 12, 0.0, 0.05}, Case{20, 30, 0.0, 0.05}, Case{20, 20, 1.0, 0.5},
+                        Case{30, 20, -0.5, 0.005}, Case{150, 30, 1.0, 0.5}, Case{17, 20, 0.0, 0.1}}) {
+    for (bool interference : {true, false}) {
+      SCOPED_TRACE(::testing::Message() << "z " << k.z << " a0 " << k.a0 << " x " << k.x
+                                        << " b " << k.b << " limit " << interference);
+      Drive d;
+      d.pinion = spec(k.z, 0.01, k.a0, 1.0, 1.25, k.x, k.b);
+      d.pinion.tip_radius_coef = 0.2;
+      d.pinion.bore_radius = 0.4 * (d.pinion.module * k.z / 2 - 1.25 * d.pinion.module);
+      d.effects.interference_limit = interference;
+      MeshGeometry g;
+      try {
+        g = build_mesh_geometry(d);
+      } catch (const DesignError&) {
+        continue;
+      }
+      const PinionToothCompliance tooth(g, d.pinion, d.effects, d.numerics);
+      const FilletFoundationCompliance fillet(g, d.pinion);
+      const RackToothCompliance rack(g, d.rack, k.b, d.numerics);
+      for (double s : {g.path.s_start, g.path.s_end}) {
+        const ToothCompliance c = tooth.at(s), r = rack.at(s);
+        const double f = fillet.at(s, k.b);
+        EXPECT_TRUE(std::isfinite(c.total() + r.total() + f));
+        EXPECT_GT(c.bending, 0.0);
+        EXPECT_GT(c.shear, 0.0);
+        EXPECT_GT(f, 0.0);
+        EXPECT_GE(r.total(), 0.0);  // zero only when the contact is on the rack root line
+      }
+      ++evaluated;
+    }
+  }
+  EXPECT_GE(evaluated, 10);
 }
 
 }  // namespace
