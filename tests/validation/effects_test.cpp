@@ -19,7 +19,9 @@ struct Case {
 };
 
 void expect_same(double a, double b, bool may_change, const char* what) {
-  if (!may_change) EXPECT_DOUBLE_EQ(a, b) << what;
+  if (!may_change) {
+    EXPECT_DOUBLE_EQ(a, b) << what;
+  }
 }
 
 TEST(Effects, OffChangesOnlyItsComponent) {

@@ -53,7 +53,9 @@ TEST(Seed000, ZoneWithMorePairsShrinks) {
   auto z4 = more_pairs_zone({"mounting.clearance=4 mm"});
   ASSERT_EQ(z0.first, z2.first);
   EXPECT_LT(z2.second, z0.second);
-  if (z4.first == z2.first) EXPECT_LT(z4.second, z2.second);
+  if (z4.first == z2.first) {
+    EXPECT_LT(z4.second, z2.second);
+  }
   auto a14 = more_pairs_zone({"pinion.pressure_angle=14 deg"});
   auto a15 = more_pairs_zone({"pinion.pressure_angle=15 deg"});
   ASSERT_EQ(a14.first, a15.first);

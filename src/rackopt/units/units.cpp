@@ -278,9 +278,9 @@ std::string format_number(double value, int significant_digits) {
   return buffer;
 }
 
-std::string format_quantity(double si_value, QuantityKind kind, std::string_view unit, int significant_digits) {
+std::string format_quantity(double value_si, QuantityKind kind, std::string_view unit, int significant_digits) {
   if (kind == QuantityKind::kDimensionless || kind == QuantityKind::kCount) {
-    return format_number(si_value, significant_digits);
+    return format_number(value_si, significant_digits);
   }
   const std::string wanted = normalize_unit(unit.empty() ? default_unit(kind) : unit);
   // An unknown output unit is a programming error: print in the kind's SI
@@ -296,7 +296,7 @@ std::string format_quantity(double si_value, QuantityKind kind, std::string_view
   }
   const double factor = chosen->si_per_unit;
   const std::string canonical = chosen->name;
-  return format_number(si_value / factor, significant_digits) + " " + canonical;
+  return format_number(value_si / factor, significant_digits) + " " + canonical;
 }
 
 std::string format_length_mm(double metres, int significant_digits) {

@@ -64,7 +64,7 @@ int parse_count(std::string_view text, const SourceMark& where = {}, const std::
 // kind's default unit). parse_quantity(format_quantity(v, k), k) == v up to
 // the printed precision. Non-finite values print as "nan"/"inf" (the formatter
 // is for output; it never throws for a value).
-std::string format_quantity(double si_value, QuantityKind kind, std::string_view unit = {},
+std::string format_quantity(double value_si, QuantityKind kind, std::string_view unit = {},
                             int significant_digits = 6);
 
 // Shorthands used by the CLI for the common kinds.

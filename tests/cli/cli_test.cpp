@@ -1,0 +1,123 @@
+// The rackopt program end to end: exit codes, files written, --json output.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct CliResult {
+  int code = -1;
+  std::string out;  // stdout only
+};
+
+// Runs the CLI with `args` (shell words), from the source directory.
+CliResult run(const std::string& args) {
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args +
+                          " 2>/dev/null";
+  CliResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string tmp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + name);
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+TEST(Cli, CheckPrintsGeometryAndSucceeds) {
+  const CliResult r = run("check problems/rack_railway.yaml");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("contact ratio"), std::string::npos);
+  EXPECT_NE(r.out.find("UNDERCUT"), std::string::npos);  // seed 000's pinion is undercut (physics.md 14.1)
+}
+
+TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {
+  const std::string dir = tmp_dir("json");
+  const CliResult r = run("stiffness problems/rack_railway.yaml --json --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);  // throws if not exactly one JSON value
+  ASSERT_TRUE(j.is_object());
+  for (const char* key : {"contact_ratio", "k_min", "k_max", "k_mean", "k_fluctuation", "zones", "warnings", "timings"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_GT(j["k_min"].get<double>(), 0.0);
+  EXPECT_NEAR(j["k_fluctuation"].get<double>(),
+              (j["k_max"].get<double>() - j["k_min"].get<double>()) / j["k_mean"].get<double>(), 1e-9);
+  EXPECT_TRUE(j["zones"].is_object());
+  EXPECT_TRUE(j["warnings"].is_array());
+  // The CSV is there, with a header and one row per sample.
+  std::ifstream csv(dir + "/stiffness.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line.rfind("travel_m,stiffness_N_per_m", 0), 0u);
+  long rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, j["samples"].get<long>());
+  // No temporary files left behind.
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+TEST(Cli, SetOverridesAKey) {
+  const CliResult a = run("stiffness problems/rack_railway.yaml --json --out " + tmp_dir("a"));
+  const CliResult b = run("stiffness problems/rack_railway.yaml --json --set 'rack.span=1.2 m' --out " + tmp_dir("b"));
+  ASSERT_EQ(a.code, 0);
+  ASSERT_EQ(b.code, 0);
+  EXPECT_GT(nlohmann::json::parse(b.out)["k_min"].get<double>(), nlohmann::json::parse(a.out)["k_min"].get<double>());
+}
+
+TEST(Cli, BadInputExitsTwoWithLocation) {
+  const std::string dir = tmp_dir("bad");
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream f(dir + "/bad.yaml");
+    f << "pinion:\n  teeth: 22\n  module: 31.831 mm\n  modul: 3\n";
+  }
+  const std::string cmd = std::string("'") + RACKOPT_CLI + "' check " + dir + "/bad.yaml 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string err;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
+  const int status = pclose(p);
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(err.find("bad.yaml:4:3"), std::string::npos) << err;
+  EXPECT_NE(err.find("pinion.modul"), std::string::npos) << err;
+}
+
+TEST(Cli, ImpossibleDesignExitsTwoWithCode) {
+  // A 1 mm pinion tip thickness budget: 8 teeth with a large shift is pointed.
+  const CliResult r = run("stiffness problems/ship_lift.yaml --json --set pinion.teeth=8 --set pinion.profile_shift=1.0 --out " +
+                    tmp_dir("pointed"));
+  EXPECT_EQ(r.code, 2);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["ok"].get<bool>());
+  EXPECT_EQ(j["error"].get<std::string>().rfind("design:", 0), 0u);
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("frobnicate x.yaml").code, 2);
+  EXPECT_EQ(run("stiffness").code, 2);
+  EXPECT_EQ(run("stiffness problems/rack_railway.yaml --bogus").code, 2);
+  EXPECT_EQ(run("check does/not/exist.yaml").code, 2);
+}
+
+}  // namespace
