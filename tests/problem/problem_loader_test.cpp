@@ -90,7 +90,6 @@ TEST(BundledProblems, RackRailwayPaperIsTheReducedModel) {
   EXPECT_EQ(d.effects.rack_span, RackSpanModel::kPerPair);
   EXPECT_FALSE(d.effects.couple_term);
   EXPECT_FALSE(d.effects.interference_limit);
-  EXPECT_DOUBLE_EQ(d.rack.body_height, 0.061);
   EXPECT_DOUBLE_EQ(d.rack.face_width, 0.060);  // defaulted to the pinion face width
 }
 

@@ -21,7 +21,7 @@ bool check_curve(const Drive& d) {
       EXPECT_TRUE(std::isfinite(s.stiffness) && s.stiffness > 0) << "X = " << s.travel;
       for (const PairState& p : s.pairs) {
         EXPECT_TRUE(std::isfinite(p.local()) && p.local() > 0);
-        EXPECT_TRUE(std::isfinite(p.load_share) && p.load_share > 0 && p.load_share <= 1 + 1e-12);
+        EXPECT_TRUE(std::isfinite(p.load_share) && p.load_share >= 0 && p.load_share <= 1 + 1e-12);
       }
     }
     EXPECT_TRUE(std::isfinite(c.k_mean) && c.k_min > 0 && c.k_max >= c.k_min);

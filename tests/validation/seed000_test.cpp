@@ -39,27 +39,32 @@ TEST(Seed000, MinimumStiffnessFallsWithSpan) {
   }
 }
 
-// Clearance 0 -> 2 -> 4 mm and pressure angle 14 -> 16 deg shorten the zone
-// with more pairs (the paper's Tables 3 and 4 trend; interference ignored as
-// the paper did).
+// Clearance 0 -> 2 -> 4 mm and pressure angle 14 -> 15 -> 16 deg shorten the
+// zone with more pairs (the paper's Tables 3 and 4 trend; interference
+// ignored as the paper did). With the stated geometry eps = 2.07 at 0 mm /
+// 14 deg: the 3-pair zone exists only there (physics.md 14.1), so the trend is
+// checked as falling contact ratio plus a shrinking (n+1)-pair zone between
+// cases with the same n.
 TEST(Seed000, ZoneWithMorePairsShrinks) {
-  auto more_pairs_zone = [](const std::vector<std::string>& sets) {
-    const MeshStiffnessModel m(test::problem("rack_railway_paper.yaml", sets));
-    const auto& zones = m.geometry().zones;
-    return std::make_pair(zones.back().pairs, zones.back().length_travel);
+  auto geometry = [](const std::string& set) {
+    return MeshStiffnessModel(test::problem("rack_railway_paper.yaml", {set})).geometry();
   };
-  auto z0 = more_pairs_zone({"mounting.clearance=0 mm"});
-  auto z2 = more_pairs_zone({"mounting.clearance=2 mm"});
-  auto z4 = more_pairs_zone({"mounting.clearance=4 mm"});
-  ASSERT_EQ(z0.first, z2.first);
-  EXPECT_LT(z2.second, z0.second);
-  if (z4.first == z2.first) {
-    EXPECT_LT(z4.second, z2.second);
+  for (const auto& series : {std::vector<std::string>{"mounting.clearance=0 mm", "mounting.clearance=2 mm",
+                                                      "mounting.clearance=4 mm"},
+                             std::vector<std::string>{"pinion.pressure_angle=14 deg",
+                                                      "pinion.pressure_angle=15 deg",
+                                                      "pinion.pressure_angle=16 deg"}}) {
+    for (std::size_t i = 0; i + 1 < series.size(); ++i) {
+      SCOPED_TRACE(series[i] + " -> " + series[i + 1]);
+      const MeshGeometry a = geometry(series[i]), b = geometry(series[i + 1]);
+      EXPECT_LT(b.path.contact_ratio, a.path.contact_ratio);
+      if (a.zones.back().pairs == b.zones.back().pairs) {
+        EXPECT_LT(b.zones.back().length_travel, a.zones.back().length_travel);
+      } else {
+        EXPECT_LT(b.zones.back().pairs, a.zones.back().pairs);  // the 3-pair zone vanished
+      }
+    }
   }
-  auto a14 = more_pairs_zone({"pinion.pressure_angle=14 deg"});
-  auto a15 = more_pairs_zone({"pinion.pressure_angle=15 deg"});
-  ASSERT_EQ(a14.first, a15.first);
-  EXPECT_LT(a15.second, a14.second);
 }
 
 }  // namespace

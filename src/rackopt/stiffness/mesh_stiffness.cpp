@@ -353,28 +353,50 @@ struct MeshStiffnessModel::Impl {
       return;
     }
     // One beam shared by all pairs: C = diag(c_j) + C_b; K = 1^T C^-1 1.
+    // Contact is unilateral (physics.md 7.6): the beam can carry a contact
+    // away from the pinion faster than the common approach, and that pair
+    // then opens. Solve on the active set, dropping the most negative share
+    // until all shares are >= 0 (at most n - 1 drops; one pair always stays).
     using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
     using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 8, 1>;
     if (n > 8) throw std::runtime_error("more than 8 pairs in mesh: not supported");
-    Mat C(n, n);
+    Mat C_full(n, n);
     for (std::size_t j = 0; j < n; ++j) {
       const PairState& pj = st.pairs[j];
-      C(j, j) = pj.local() + pj.body;
+      C_full(j, j) = pj.local() + pj.body;
       for (std::size_t k = j + 1; k < n; ++k) {
         const PairState& pk = st.pairs[k];
         const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
-        C(j, k) = c;
-        C(k, j) = c;
+        C_full(j, k) = c;
+        C_full(k, j) = c;
       }
     }
-    const Vec f = C.llt().solve(Vec::Ones(n));
-    const double K = f.sum();
-    if (!(K > 0) || !std::isfinite(K)) {
-      throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
-                               std::to_string(st.travel));
+    std::vector<std::size_t> active(n);
+    for (std::size_t j = 0; j < n; ++j) active[j] = j;
+    for (;;) {
+      const std::size_t m = active.size();
+      Mat C(m, m);
+      for (std::size_t a = 0; a < m; ++a) {
+        for (std::size_t b = 0; b < m; ++b) C(a, b) = C_full(active[a], active[b]);
+      }
+      const Vec f = C.llt().solve(Vec::Ones(m));
+      const double K = f.sum();
+      if (!(K > 0) || !std::isfinite(K)) {
+        throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                                 std::to_string(st.travel));
+      }
+      std::size_t worst = m;
+      for (std::size_t a = 0; a < m; ++a) {
+        if (f[a] < -1e-14 * K && (worst == m || f[a] < f[worst])) worst = a;
+      }
+      if (worst == m || m == 1) {
+        st.stiffness = K;
+        for (PairState& p : st.pairs) p.load_share = 0;
+        for (std::size_t a = 0; a < m; ++a) st.pairs[active[a]].load_share = std::max(f[a], 0.0) / K;
+        return;
+      }
+      active.erase(active.begin() + static_cast<std::ptrdiff_t>(worst));
     }
-    st.stiffness = K;
-    for (std::size_t j = 0; j < n; ++j) st.pairs[j].load_share = f[j] / K;
   }
 
   std::vector<double> breakpoints(double lo, double hi) const {

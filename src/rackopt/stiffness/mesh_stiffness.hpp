@@ -38,7 +38,9 @@ struct PairState {
   double body = 0;       // diagonal of the body flexibility matrix (own load on own contact)
   bool spalled = false;  // a spall changes this pair at this position
   double local() const { return pinion.total() + fillet + hertz + rack.total(); }
-  double load_share = 0;  // f_j / F
+  // f_j / F. Contact is unilateral: 0 when the rack body carries this contact
+  // away from the pinion faster than the common approach (the pair opens).
+  double load_share = 0;
 };
 
 // Mesh state at one travel position X.
