@@ -185,11 +185,11 @@ std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title,
   o << "set output '" << png_name << "'\n";
   o << "set multiplot layout 2,1 title '" << title << "'\n";
   o << "set grid\nset key outside right\n";
-  o << "set ylabel 'mesh stiffness [MN/m]'\n";
+  o << "set ylabel 'mesh stiffness [MN/m]'\nset logscale y\n";
   o << "plot '" << csv_name << "' using 1:($2/1e6) with lines lw 2 title 'coupled mesh', \\\n"
     << "     '' using 1:($3/1e6) with lines dt 2 title 'rigid rack body'\n";
   o << "set xlabel 'travel of the pitch point along the span [m]'\n";
-  o << "set ylabel 'load share [-]'\nset yrange [0:1.05]\n";
+  o << "unset logscale y\nset ylabel 'load share [-]'\nset yrange [0:1.05]\n";
   const int base = 6;  // first per-pair column (1-based) is pair0_in_mesh
   const int per_pair = 15;
   o << "plot '" << csv_name << "' using 1:(1/0) notitle";
