@@ -130,16 +130,42 @@ TEST(HardCases, SpallTouchingRootOrTip) {
   Drive d = base;
   d.spalls.front().start = 0.0;  // touches the start of the active profile
   EXPECT_TRUE(check_curve(small_fast(d)));
+  // Touching the tip: the band ends exactly at the tip radius.
+  {
+    const MeshGeometry g = MeshStiffnessModel(base).geometry();
+    const double active_height = g.pinion.tip_radius - g.pinion_contact_radius(g.path.s_start);
+    d = base;
+    d.spalls.front().start = active_height - d.spalls.front().length;
+    EXPECT_TRUE(check_curve(small_fast(d)));
+  }
+  // A rack spall touching the rack tip (top of the rack's active flank).
+  {
+    const MeshGeometry g = MeshStiffnessModel(base).geometry();
+    const double rack_active = g.contact_height_above_datum(g.path.s_start) - g.contact_height_above_datum(g.path.s_end);
+    d = base;
+    d.spalls.front().member = Member::kRack;
+    d.spalls.front().tooth = 1;
+    d.spalls.front().start = rack_active - d.spalls.front().length;
+    EXPECT_TRUE(check_curve(small_fast(d)));
+  }
   // Too deep, too wide and off-profile spalls are rejected with their code.
+  auto code_of = [](const Drive& bad) {
+    try {
+      MeshStiffnessModel m(bad);
+    } catch (const DesignError& e) {
+      return e.code();
+    }
+    return std::string("none");
+  };
   d = base;
-  d.spalls.front().depth = 1.0;
-  EXPECT_THROW(MeshStiffnessModel{d}, DesignError);
+  d.spalls.front().depth = 0.1;
+  EXPECT_EQ(code_of(d), "spall_too_deep");
   d = base;
   d.spalls.front().width = 2 * d.pinion.face_width;
-  EXPECT_THROW(MeshStiffnessModel{d}, DesignError);
+  EXPECT_EQ(code_of(d), "spall_too_wide");
   d = base;
   d.spalls.front().start = 1.0;
-  EXPECT_THROW(MeshStiffnessModel{d}, DesignError);
+  EXPECT_EQ(code_of(d), "spall_off_profile");
 }
 
 }  // namespace

@@ -54,5 +54,31 @@ TEST(Seed001Spall, DipOnlyWhileSpalledToothInMeshLongerAndDeeperOnAverage) {
   }
 }
 
+// A spall on a rack tooth acts only while that rack tooth is in mesh, and a
+// rack tooth meshes once per span: the dip happens once along the travel.
+TEST(Seed001Spall, RackToothSpallActsOnlyOnThatTooth) {
+  Drive d = test::problem("large_module.yaml", {"variant=severe"});
+  d.spalls.front().member = Member::kRack;
+  d.spalls.front().tooth = 5;
+  const StiffnessCurve normal = MeshStiffnessModel(test::problem("large_module.yaml", {"variant=normal"})).curve();
+  const StiffnessCurve c = MeshStiffnessModel(d).curve();
+  ASSERT_EQ(c.samples.size(), normal.samples.size());
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t i = 0; i < c.samples.size(); ++i) {
+    bool on = false;
+    for (const PairState& p : c.samples[i].pairs) on = on || p.rack_tooth == 5;
+    const double ratio = c.samples[i].stiffness / normal.samples[i].stiffness;
+    if (!on) {
+      EXPECT_NEAR(ratio, 1.0, 1e-12) << c.samples[i].travel;
+    } else if (ratio < 1 - 1e-9) {
+      lo = std::min(lo, c.samples[i].travel);
+      hi = std::max(hi, c.samples[i].travel);
+    }
+  }
+  const double p = M_PI * d.pinion.module;
+  ASSERT_TRUE(std::isfinite(lo));
+  EXPECT_LT(hi - lo, 2 * p);  // one passage of tooth 5, not periodic
+}
+
 }  // namespace
 }  // namespace rackopt
