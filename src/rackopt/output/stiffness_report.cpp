@@ -55,6 +55,24 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
       << " along the LOA, " << mm(z.length_travel) << " of rack travel, " << mm(z.length_flank)
       << " along the rack flank, " << deg(z.pinion_angle) << " of pinion rotation\n";
   }
+  const Effects& e = d.effects;
+  auto onoff = [](bool b) { return b ? "on" : "off"; };
+  const char* span = e.rack_span == RackSpanModel::kRigid     ? "rigid"
+                     : e.rack_span == RackSpanModel::kCoupled ? "coupled (one beam for all pairs)"
+                                                              : "per pair (seed 000)";
+  const char* hertz = e.hertz == HertzModel::kOff      ? "off"
+                      : e.hertz == HertzModel::kLinear ? "linear"
+                                                       : "Weber-Banaschek (load dependent)";
+  o << "  effects: pinion tooth " << onoff(e.pinion_tooth) << " (root segment " << onoff(e.root_segment)
+    << "), fillet foundation " << onoff(e.fillet_foundation) << ", rack tooth " << onoff(e.rack_tooth)
+    << ", Hertz " << hertz << ",\n           rack span " << span;
+  if (e.rack_span != RackSpanModel::kRigid) {
+    o << " [couple " << onoff(e.couple_term) << ", axial " << onoff(e.body_axial) << ", shear "
+      << onoff(e.body_shear) << "]";
+  }
+  o << ", interference limit " << onoff(e.interference_limit) << ", spalls "
+    << (e.spalling ? std::to_string(d.spalls.size()) : std::string("off"))
+    << "\n           (rack root foundation not modelled: physics.md 5.4 option 2)\n";
   for (const std::string& w : g.warnings) o << "  warning: " << w << "\n";
   return o.str();
 }
