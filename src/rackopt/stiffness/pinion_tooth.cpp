@@ -218,14 +218,7 @@ double PinionToothCompliance::half_thickness_at_radius(double r) const {
 
 void PinionToothCompliance::validate(const SpallBand& spall) const {
   const Impl& m = *impl_;
-  if (!(spall.width >= 0.0) || !(spall.depth >= 0.0)) {
-    throw InputError({}, "spall", "spall width and depth must be non-negative");
-  }
-  if (!(spall.low <= spall.high)) {
-    throw InputError({}, "spall", "spall lower edge " + mm(spall.low) + " above its upper edge " +
-                                      mm(spall.high));
-  }
-  if (spall.width == 0.0 || spall.depth == 0.0) return;
+  if (!spall_band_removes_material(spall)) return;
   const double tol = 1e-12 * m.ra;
   if (spall.low < m.rf - tol || spall.high > m.ra + tol) {
     throw DesignError("spall_off_profile", "pinion spall band [" + mm(spall.low) + ", " +

@@ -65,18 +65,13 @@ double RackToothCompliance::contact_height(double s) const {
 
 ToothCompliance RackToothCompliance::at(double s, const SpallBand* spall) const {
   if (!std::isfinite(s)) throw InputError({}, "s", "contact position is not finite");
-  return at_height(contact_height(std::max(s, 0.0)), spall);
+  // The rack flank is straight: a contact behind the pinion base circle
+  // (interference ignored) still has a well-defined height on it.
+  return at_height(contact_height(s), spall);
 }
 
 void RackToothCompliance::validate(const SpallBand& spall) const {
-  if (!(spall.width >= 0.0) || !(spall.depth >= 0.0)) {
-    throw InputError({}, "spall", "spall width and depth must be non-negative");
-  }
-  if (!(spall.low <= spall.high)) {
-    throw InputError({}, "spall", "spall lower edge " + mm(spall.low) + " above its upper edge " +
-                                      mm(spall.high));
-  }
-  if (spall.width == 0.0 || spall.depth == 0.0) return;
+  if (!spall_band_removes_material(spall)) return;
   const double tol = 1e-12 * height_;
   if (spall.low < -tol || spall.high > height_ + tol) {
     throw DesignError("spall_off_profile", "rack spall band [" + mm(spall.low) + ", " +

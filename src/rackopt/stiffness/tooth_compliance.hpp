@@ -21,4 +21,9 @@ struct SpallBand {
   double depth = 0.0;  // h_s [m]
 };
 
+// Checks what any band must satisfy whatever the tooth: width and depth >= 0
+// and low <= high; throws InputError otherwise. Returns false when the band
+// removes nothing (zero width or depth), so callers can skip the tooth checks.
+bool spall_band_removes_material(const SpallBand& band);
+
 }  // namespace rackopt
