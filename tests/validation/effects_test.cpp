@@ -77,5 +77,30 @@ TEST(Effects, OffComponentsAreZero) {
   EXPECT_DOUBLE_EQ(s.stiffness, s.local_stiffness);
 }
 
+// Weber-Banaschek contact (physics.md 4.2): the contact half-width grows with
+// sqrt(F), so the secant compliance falls with load and the mesh stiffens;
+// the load-share fixed point still sums to one.
+TEST(Effects, LoadDependentHertzStiffensWithLoad) {
+  Drive d = test::problem("rack_railway.yaml");
+  d.effects.hertz = HertzModel::kWeberBanaschek;
+  d.numerics.positions_per_period = 20;
+  double prev = 0;
+  for (double force : {5e3, 5e4, 5e5}) {
+    d.load.force = force;
+    const MeshStiffnessModel m(d);
+    const StiffnessCurve c = m.curve();
+    for (const MeshState& s : c.samples) {
+      double share = 0;
+      for (const PairState& p : s.pairs) {
+        EXPECT_GT(p.hertz, 0.0);
+        share += p.load_share;
+      }
+      EXPECT_NEAR(share, 1.0, 1e-12);
+    }
+    EXPECT_GT(c.k_mean, prev) << force;
+    prev = c.k_mean;
+  }
+}
+
 }  // namespace
 }  // namespace rackopt
