@@ -126,6 +126,69 @@ struct Numerics {
   int positions_per_period = 100;    // samples of rack travel per mesh period
 };
 
+// Hardness versus depth below the original flank surface (physics.md 11).
+// Hardness is stored in Pa (1 HB = 9.80665e6 Pa, 1 HV ~ the same here).
+struct HardnessProfile {
+  enum class Kind {
+    kConstant,      // `surface` everywhere
+    kPolynomial,    // measured fit H(h) = sum_i coefficients[i] h^i, valid for h <= valid_depth
+    kTable,         // measured points (depths ascending), linear between them
+    kCaseHardened,  // H_c + (H_s - H_c) exp(-(h/delta)^n), delta from case_depth and limit
+  };
+  Kind kind = Kind::kConstant;
+  double surface = 0;                 // H at depth 0 [Pa]
+  double core = 0;                    // core hardness [Pa]; measured data is clamped to it
+                                      // outside its range (0 = the last measured value)
+  std::vector<double> coefficients;   // kPolynomial: SI (H in Pa, h in m)
+  double valid_depth = 0;             // kPolynomial: deepest measured depth [m]
+  std::vector<double> depths;         // kTable [m]
+  std::vector<double> values;         // kTable [Pa]
+  double case_depth = 0;              // kCaseHardened: effective depth D_eff (CHD/SHD) [m]
+  double limit = 0;                   // kCaseHardened: hardness at D_eff [Pa] (0 = 0.8 surface, ISO 18203 SHD)
+  double exponent = 3.0;              // kCaseHardened: n
+};
+
+// Archard wear (physics.md 10) and its failure criteria.
+struct WearSpec {
+  double coefficient = 0;            // dimensionless Archard K (k = K / H); 0 = wear not configured
+  HardnessProfile pinion_hardness;
+  HardnessProfile rack_hardness;
+  double max_depth = 1.5e-3;         // h_max [m]: failure when the deepest wear reaches it
+  double min_contact_ratio = 1.0;    // [eps]: failure when the contact ratio falls below
+  bool stop_at_case_depth = false;   // failure when wear reaches a case-hardened profile's case_depth
+  bool update_profile = true;        // re-solve load sharing and contact ratio on the worn profiles
+  int profile_points = 60;           // points along each member's active profile
+  double block_fraction = 0.02;      // adaptive block: at most this fraction of h_max worn per block
+};
+
+// How often the drive runs. A rack flank point meets a pinion once per
+// passage; a pinion flank point once per pinion revolution over the rack.
+struct Duty {
+  double rack_meshes_per_year = 0;   // passages of a pinion over a given rack tooth per year (seed 004 n_L)
+  double pinion_meshes_per_year = 0; // meshes of a given pinion tooth per year (0 = same as the rack's)
+};
+
+// One uncertain input for wear-life reliability (physics.md 12).
+struct RandomInput {
+  enum class Distribution { kNormal, kLognormal, kUniform, kWeibull };
+  std::string key;  // "contact_ratio" | "wear.coefficient" | "load" | "surface_hardness"
+  Distribution distribution = Distribution::kNormal;
+  // normal: mean, standard deviation; lognormal: median, sigma of ln;
+  // uniform: lower, upper; weibull: scale, shape. In the key's SI unit
+  // (contact_ratio: the contact ratio itself; load: force [N]; surface_hardness [Pa]).
+  double a = 0, b = 0;
+};
+
+struct ReliabilitySpec {
+  std::vector<RandomInput> inputs;
+  int samples = 1000;
+  unsigned long seed = 1;
+  bool sobol = false;                     // quasi-random (Sobol) instead of pseudo-random
+  std::vector<double> reliabilities;      // R values for life at R
+  std::vector<double> times;              // [s] times at which R(t) is reported
+  double ks_level = 0.05;                 // Kolmogorov-Smirnov significance level
+};
+
 struct Drive {
   std::string name;
   std::string source_file;  // problem file it was loaded from (for messages)
@@ -136,6 +199,14 @@ struct Drive {
   Effects effects;
   std::vector<Spall> spalls;
   Numerics numerics;
+  WearSpec wear;
+  Duty duty;
+  ReliabilitySpec reliability;
 };
+
+// Seconds per year used for every life in years (Julian year, 365.25 d).
+inline constexpr double kSecondsPerYear = 365.25 * 24 * 3600;
+// Brinell hardness number to Pa (physics.md 10.1: H[Pa] = 9.80665e6 HB).
+inline constexpr double kPaPerHB = 9.80665e6;
 
 }  // namespace rackopt
