@@ -1,0 +1,36 @@
+// Shared pieces of the rackopt command line: arguments and the commands.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rackopt::cli {
+
+constexpr int kOk = 0;
+constexpr int kRunFailed = 1;
+constexpr int kBadInput = 2;
+
+struct Args {
+  std::string command;
+  std::string file;
+  std::vector<std::string> overrides;
+  std::string out_dir;
+  bool json = false;
+  long samples = -1;       // --samples N (wear): overrides reliability.samples
+  long seed = -1;          // --seed S (wear): overrides reliability.seed
+  int threads = 0;         // --threads N (wear): 0 = all cores
+};
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Parses argv; throws UsageError for unknown options or missing values.
+Args parse_args(int argc, char** argv);
+
+int cmd_check(const Args& a);
+int cmd_stiffness(const Args& a);
+int cmd_wear(const Args& a);
+
+}  // namespace rackopt::cli

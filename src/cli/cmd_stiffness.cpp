@@ -1,0 +1,108 @@
+// rackopt check / rackopt stiffness.
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "rackopt/output/atomic_file.hpp"
+#include "rackopt/output/json_writer.hpp"
+#include "rackopt/output/stiffness_report.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace rackopt::cli {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Runs gnuplot on DIR/stiffness.gp; the PNG is written under a temporary
+// name and renamed, so a failed plot never leaves a half-written image.
+// Returns the PNG path, or "" (with a warning) when gnuplot is unavailable.
+std::string render_plot(const std::filesystem::path& dir, std::vector<std::string>& warnings) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    warnings.push_back("gnuplot not found: wrote stiffness.gp but no plot (install gnuplot-nox)");
+    return "";
+  }
+  const std::string cmd = "cd '" + dir.string() + "' && gnuplot stiffness.gp >/dev/null 2>gnuplot.log";
+  if (std::system(cmd.c_str()) != 0) {
+    warnings.push_back("gnuplot failed: see " + (dir / "gnuplot.log").string());
+    return "";
+  }
+  std::filesystem::remove(dir / "gnuplot.log");
+  std::error_code ec;
+  std::filesystem::rename(dir / "stiffness.png.tmp", dir / "stiffness.png", ec);
+  if (ec) {
+    warnings.push_back("could not place the plot: " + ec.message());
+    return "";
+  }
+  return (dir / "stiffness.png").string();
+}
+
+}  // namespace
+
+int cmd_check(const Args& a) {
+  const rackopt::Drive drive = rackopt::load_problem(a.file, a.overrides);
+  const rackopt::MeshStiffnessModel model(drive);
+  std::string text = rackopt::geometry_summary(drive, model.geometry());
+  for (std::size_t i = model.geometry().warnings.size(); i < model.warnings().size(); ++i) {
+    text += "  warning: " + model.warnings()[i] + "\n";
+  }
+  if (a.json) {
+    rackopt::JsonWriter j;
+    j.begin_object();
+    j.key("ok").value(true);
+    j.key("contact_ratio").value(model.geometry().path.contact_ratio);
+    j.key("warnings").begin_array();
+    for (const auto& w : model.warnings()) j.value(w);
+    j.end_array();
+    j.end_object();
+    std::cerr << text;
+    std::cout << j.str() << "\n";
+  } else {
+    std::cout << text << "ok: " << a.file << "\n";
+  }
+  return kOk;
+}
+
+int cmd_stiffness(const Args& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const rackopt::Drive drive = rackopt::load_problem(a.file, a.overrides);
+  const rackopt::MeshStiffnessModel model(drive);
+  rackopt::Timings t;
+  t.model_ms = ms_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  rackopt::StiffnessCurve curve = model.curve();
+  t.curve_ms = ms_since(t1);
+
+  namespace fs = std::filesystem;
+  fs::path dir = a.out_dir.empty() ? fs::path("out") / fs::path(a.file).stem() : fs::path(a.out_dir);
+  const fs::path csv = dir / "stiffness.csv";
+  rackopt::write_file_atomic(csv.string(), rackopt::stiffness_csv(curve));
+  const std::string title = (drive.name.empty() ? fs::path(a.file).stem().string() : drive.name);
+  rackopt::write_file_atomic((dir / "stiffness.gp").string(),
+                             rackopt::stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
+  const std::string png = render_plot(dir, curve.warnings);
+  t.total_ms = ms_since(t0);
+
+  std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve);
+  text += "  wrote " + csv.string() + "\n";
+  text += png.empty() ? "  no plot (see warnings)\n" : "  plot  " + png + "\n";
+  for (std::size_t i = model.warnings().size(); i < curve.warnings.size(); ++i) {
+    text += "  warning: " + curve.warnings[i] + "\n";
+  }
+  if (a.json) {
+    std::cerr << text;
+    std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, t, csv.string(), png) << "\n";
+  } else {
+    std::cout << text;
+  }
+  return kOk;
+}
+
+
+}  // namespace rackopt::cli
