@@ -64,6 +64,32 @@ constexpr KeySpec kKeySpecs[] = {
     {"faults[].depth", QuantityKind::kLength, 0, kInf, true, true},
     {"numerics.quadrature_order", QuantityKind::kCount, 2, 64, false, false},
     {"numerics.positions_per_period", QuantityKind::kCount, 4, 10000, false, false},
+    // Wear (physics.md 10, 11). Archard K spans mild wear ~1e-8 to severe
+    // ~1e-2 (10.4); 1e-20..1 leaves room for any reading of a paper's k.
+    {"wear.coefficient", QuantityKind::kDimensionless, 1e-20, 1, false, false},
+    {"wear.max_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    // Below 1 the drive loses continuous contact whatever the wear: the
+    // allowable contact ratio of seed 004's criterion is at least 1.
+    {"wear.min_contact_ratio", QuantityKind::kDimensionless, 1, 5, false, false},
+    {"wear.profile_points", QuantityKind::kCount, 5, 2000, false, false},
+    {"wear.block_fraction", QuantityKind::kDimensionless, 1e-6, 0.5, false, false},
+    // One schema for wear.hardness, wear.pinion_hardness, wear.rack_hardness.
+    // 2000 HB is far above any steel (a file-hard surface is ~ 700 HB).
+    {"wear.hardness.surface", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
+    {"wear.hardness.core", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
+    {"wear.hardness.limit", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
+    {"wear.hardness.case_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    {"wear.hardness.exponent", QuantityKind::kDimensionless, 0.5, 20, false, false},
+    {"wear.hardness.valid_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    {"wear.hardness.depths[]", QuantityKind::kLength, 0, 1.0, false, false},
+    {"wear.hardness.values[]", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
+    {"duty.rack_meshes_per_year", QuantityKind::kRate, 0, kInf, true, true},
+    {"duty.pinion_meshes_per_year", QuantityKind::kRate, 0, kInf, false, true},
+    {"reliability.samples", QuantityKind::kCount, 1, 1e6, false, false},
+    {"reliability.seed", QuantityKind::kCount, 0, 2e9, false, false},
+    {"reliability.ks_level", QuantityKind::kDimensionless, 0.001, 0.5, false, false},
+    {"reliability.R[]", QuantityKind::kDimensionless, 0, 1, true, true},
+    {"reliability.times[]", QuantityKind::kTime, 0, kInf, true, true},
 };
 
 const KeySpec* find_spec(std::string_view pattern) {
@@ -116,6 +142,18 @@ std::string range_text(const std::string& name, QuantityKind kind, double lo, do
   out += name;
   if (std::isfinite(hi)) out += std::string(hi_open ? " < " : " <= ") + format_in_kind(hi, kind);
   return out;
+}
+
+// Throws when v is outside the range; `name` is the key as the range text
+// shows it, `why` explains a derived limit.
+void check_value_range(const SourceMark& where, const std::string& path, const std::string& name, double v,
+                       QuantityKind kind, double lo, double hi, bool lo_open, bool hi_open, const std::string& why) {
+  const bool below = lo_open ? !(v > lo) : !(v >= lo);
+  const bool above = hi_open ? !(v < hi) : !(v <= hi);
+  if (!below && !above) return;
+  throw InputError(where, path,
+                   format_in_kind(v, kind) + " is out of range; allowed: " +
+                       range_text(name, kind, lo, hi, lo_open, hi_open) + why);
 }
 
 // One map of the problem (a section such as `pinion`, one material, one
@@ -216,6 +254,9 @@ class Block {
       case QuantityKind::kStiffness: return "a stiffness (e.g. 200 MN/m)";
       case QuantityKind::kArea: return "an area (e.g. 3600 mm^2)";
       case QuantityKind::kSecondMoment: return "a second moment of area (e.g. 2.15e6 mm^4)";
+      case QuantityKind::kTime: return "a time (e.g. 60 yr)";
+      case QuantityKind::kHardness: return "a hardness (e.g. 596 HB)";
+      case QuantityKind::kRate: return "a rate (e.g. 3000 1/yr)";
     }
     return "a number";
   }
@@ -248,15 +289,22 @@ class Block {
   // Throws when v is outside the range; `why` explains a derived limit.
   void check_range(const std::string& key, double v, double lo, double hi, bool lo_open, bool hi_open,
                    const std::string& why) const {
-    const bool below = lo_open ? !(v > lo) : !(v >= lo);
-    const bool above = hi_open ? !(v < hi) : !(v <= hi);
-    if (!below && !above) return;
-    const QuantityKind kind = spec(key).kind;
+    check_range_as(key, spec(key).kind, v, lo, hi, lo_open, hi_open, why);
+  }
+
+  // Same for a key without KeySpec (its kind decided by another key).
+  void check_range_as(const std::string& key, QuantityKind kind, double v, double lo, double hi, bool lo_open,
+                      bool hi_open, const std::string& why) const {
     const auto text = scalar(key, "");
-    const SourceMark where = text ? text->second : mark_;
-    throw InputError(where, child_path(key),
-                     format_in_kind(v, kind) + " is out of range; allowed: " +
-                         range_text(key, kind, lo, hi, lo_open, hi_open) + why);
+    const SourceMark where = text ? text->second : key_mark(key);
+    check_value_range(where, child_path(key), key, v, kind, lo, hi, lo_open, hi_open, why);
+  }
+
+  // A number of `kind` in SI without KeySpec or range; nullopt when absent.
+  std::optional<double> quantity(const std::string& key, QuantityKind kind, std::string_view bare_unit = {}) const {
+    const auto text = scalar(key, expected_text(kind));
+    if (!text) return std::nullopt;
+    return parse_quantity(text->first, kind, text->second, child_path(key), bare_unit);
   }
 
   bool flag(const std::string& key, bool fallback) const {
@@ -290,8 +338,9 @@ class Block {
   std::vector<std::string> allowed_;
 };
 
-const std::vector<std::string> kTopKeys = {"name", "description", "variant", "variants", "pinion", "rack",
-                                           "mounting", "materials", "load", "effects", "faults", "numerics"};
+const std::vector<std::string> kTopKeys = {"name",      "description", "variant", "variants",  "pinion",
+                                           "rack",      "mounting",    "materials", "load",    "effects",
+                                           "faults",    "numerics",    "wear",      "duty",    "reliability"};
 
 Material find_material(const std::map<std::string, Material>& materials, const Block& block, const std::string& key) {
   const auto name = block.scalar(key, "a material name");
@@ -303,6 +352,420 @@ Material find_material(const std::map<std::string, Material>& materials, const B
   throw InputError(name ? name->second : block.mark(), block.child_path(key),
                    "unknown material '" + wanted + "'; defined: " + join(names) +
                        " (add it under materials: {" + wanted + ": {E: ..., nu: ...}})");
+}
+
+// ------------------------------------------------------------ wear, duty, reliability
+
+// One value of a list key, with where it was written.
+struct ListValue {
+  double si = 0;
+  SourceMark mark;
+  std::string path;  // "reliability.times[2]"
+};
+
+// Reads `key` of `block` as a list of `kind` quantities, written either as a
+// YAML list ([40 yr, 55 yr] or [40, 55]) or, because YAML cannot put a unit
+// after a flow list, as one text "[40, 55, 60] yr" whose trailing unit applies
+// to every bare number. A bare item means `bare_unit` (empty: the kind's
+// default). A single value is a list of one. Each item is range-checked
+// against the KeySpec `pattern` ("reliability.times[]"). Empty when absent.
+std::vector<ListValue> quantity_list(const Block& block, const std::string& key, const std::string& pattern,
+                                     std::string_view bare_unit = {}) {
+  std::vector<ListValue> out;
+  const MarkedNode* node = block.get(key);
+  if (node == nullptr) return out;
+  const KeySpec* spec = find_spec(pattern);
+  if (spec == nullptr) throw std::logic_error("problem loader: no KeySpec for " + pattern);
+  const std::string path = block.child_path(key);
+  auto add = [&](std::string_view text, const SourceMark& mark, std::string_view unit) {
+    ListValue v;
+    v.path = path + "[" + std::to_string(out.size()) + "]";
+    v.mark = mark;
+    v.si = parse_quantity(text, spec->kind, mark, v.path, unit);
+    check_value_range(mark, v.path, key, v.si, spec->kind, spec->lo, spec->hi, spec->lo_open, spec->hi_open, "");
+    out.push_back(v);
+  };
+  if (node->type == MarkedNode::Type::kSequence) {
+    for (const auto& item : node->items) {
+      if (item.type != MarkedNode::Type::kScalar) {
+        throw InputError(item.mark, path + "[" + std::to_string(out.size()) + "]",
+                         "expected " + Block::expected_text(spec->kind) + ", found " + item.type_name());
+      }
+      add(item.scalar, item.mark, bare_unit);
+    }
+    return out;
+  }
+  if (node->type != MarkedNode::Type::kScalar) {
+    throw InputError(node->mark, path,
+                     "expected a list of values (e.g. [40 yr, 55 yr], or \"[40, 55] yr\"), found " + node->type_name());
+  }
+  const std::string& text = node->scalar;
+  const std::size_t open = text.find('[');
+  if (open == std::string::npos) {
+    add(text, node->mark, bare_unit);
+    return out;
+  }
+  const std::size_t close = text.find(']', open);
+  if (close == std::string::npos || text.find_first_not_of(" \t", 0) != open) {
+    throw InputError(node->mark, path, "'" + text + "' is not a list; write [40 yr, 55 yr] or \"[40, 55] yr\"");
+  }
+  const std::string trailing = text.substr(close + 1);
+  const std::string unit = trailing.find_first_not_of(" \t") == std::string::npos ? std::string(bare_unit) : trailing;
+  if (!unit.empty()) unit_factor(unit, spec->kind, node->mark, path);  // an unknown trailing unit fails here
+  const std::string inner = text.substr(open + 1, close - open - 1);
+  if (inner.find_first_not_of(" \t") == std::string::npos) return out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = inner.find(',', start);
+    add(inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start), node->mark, unit);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+const char* const kHardnessKinds = "constant | polynomial | table | case_hardened";
+
+// Evaluates sum c_i h^i (Horner).
+double polynomial_value(const std::vector<double>& c, double h) {
+  double v = 0;
+  for (std::size_t i = c.size(); i-- > 0;) v = v * h + c[i];
+  return v;
+}
+
+// A hardness profile map (or a single hardness: constant profile) at `path`.
+// Every profile comes out complete: surface = H(0), core filled (measured
+// data: the value at its deepest point unless given; constant: the surface),
+// limit filled (case_hardened: 0.8 surface unless given).
+HardnessProfile read_hardness(const MarkedNode& node, const std::string& path) {
+  HardnessProfile h;
+  const KeySpec& surface_spec = *find_spec("wear.hardness.surface");
+  if (node.type == MarkedNode::Type::kScalar) {
+    h.kind = HardnessProfile::Kind::kConstant;
+    h.surface = parse_quantity(node.scalar, QuantityKind::kHardness, node.mark, path);
+    check_value_range(node.mark, path, "hardness", h.surface, QuantityKind::kHardness, surface_spec.lo,
+                      surface_spec.hi, surface_spec.lo_open, surface_spec.hi_open, "");
+    h.core = h.surface;
+    return h;
+  }
+  if (!node.is_map()) {
+    throw InputError(node.mark, path,
+                     std::string("expected a hardness (e.g. 596 HB: a constant profile) or a profile map {kind: ") +
+                         kHardnessKinds + ", ...}, found " + node.type_name());
+  }
+  const std::vector<std::string> all = {"kind",        "surface", "core",     "limit",     "case_depth",
+                                        "exponent",    "coefficients", "valid_depth", "depths", "values",
+                                        "depth_unit",  "hardness_unit"};
+  const Block b(&node, path, "wear.hardness", node.mark, all);
+  if (!b.has("kind")) {
+    b.missing("kind", std::string("the profile kind: ") + kHardnessKinds +
+                          " (or write a single hardness such as 596 HB for a constant profile)");
+  }
+  const std::string kind = b.choice("kind", {"constant", "polynomial", "table", "case_hardened"}, "constant");
+  std::vector<std::string> own;
+  if (kind == "constant") own = {"kind", "surface"};
+  if (kind == "polynomial") own = {"kind", "coefficients", "depth_unit", "hardness_unit", "valid_depth", "core"};
+  if (kind == "table") own = {"kind", "depths", "values", "depth_unit", "hardness_unit", "core"};
+  if (kind == "case_hardened") own = {"kind", "surface", "core", "case_depth", "limit", "exponent"};
+  for (const auto& e : node.entries) {
+    if (std::find(own.begin(), own.end(), e.key) == own.end()) {
+      throw InputError(e.key_mark, b.child_path(e.key),
+                       "key '" + e.key + "' does not belong to a '" + kind + "' hardness profile; its keys: " +
+                           join(own));
+    }
+  }
+  // Units of bare numbers in measured data (lists and polynomial coefficients).
+  std::string depth_unit = std::string(default_unit(QuantityKind::kLength));
+  std::string hardness_unit = std::string(default_unit(QuantityKind::kHardness));
+  double depth_factor = 1e-3;
+  double hardness_factor = kPaPerHB;
+  if (const auto t = b.scalar("depth_unit", "a length unit (e.g. mm)")) {
+    depth_factor = unit_factor(t->first, QuantityKind::kLength, t->second, b.child_path("depth_unit"));
+    depth_unit = t->first;
+  }
+  if (const auto t = b.scalar("hardness_unit", "a hardness unit (e.g. HB)")) {
+    hardness_factor = unit_factor(t->first, QuantityKind::kHardness, t->second, b.child_path("hardness_unit"));
+    hardness_unit = t->first;
+  }
+
+  if (kind == "constant") {
+    h.kind = HardnessProfile::Kind::kConstant;
+    h.surface = b.number("surface", std::nullopt);
+    h.core = h.surface;
+  } else if (kind == "polynomial") {
+    h.kind = HardnessProfile::Kind::kPolynomial;
+    const MarkedNode* list = b.get("coefficients");
+    if (list == nullptr) {
+      b.missing("coefficients", "the fit's coefficients in ascending powers of depth, e.g. [596, 2, -1.6786, -0.25] "
+                                "(units from depth_unit and hardness_unit)");
+    }
+    if (list->type != MarkedNode::Type::kSequence || list->items.empty() || list->items.size() > 12) {
+      throw InputError(list->mark, b.child_path("coefficients"),
+                       "expected a list of 1 to 12 plain numbers c0, c1, ... (H = c0 + c1 h + c2 h^2 + ..., in " +
+                           hardness_unit + " with h in " + depth_unit + "), found " +
+                           (list->type == MarkedNode::Type::kSequence
+                                ? std::to_string(list->items.size()) + " items"
+                                : list->type_name()));
+    }
+    // c_i [Pa / m^i] = c_i [unit_H / unit_h^i] * unit_H[Pa] / unit_h[m]^i.
+    double per_depth_power = 1.0;
+    for (std::size_t i = 0; i < list->items.size(); ++i) {
+      const MarkedNode& item = list->items[i];
+      const std::string item_path = b.child_path("coefficients") + "[" + std::to_string(i) + "]";
+      if (item.type != MarkedNode::Type::kScalar) {
+        throw InputError(item.mark, item_path, "expected a plain number, found " + item.type_name());
+      }
+      double c = 0;
+      try {
+        c = parse_quantity(item.scalar, QuantityKind::kDimensionless, item.mark, item_path);
+      } catch (const InputError& e) {
+        throw InputError(e.mark(), e.key_path(),
+                         e.message() + " (coefficients are plain numbers; their units are set once by depth_unit, "
+                                       "default mm, and hardness_unit, default HB)");
+      }
+      h.coefficients.push_back(c * hardness_factor / per_depth_power);
+      per_depth_power *= depth_factor;
+    }
+    h.valid_depth = b.number("valid_depth", std::nullopt);
+    h.surface = h.coefficients.front();
+    if (!(h.surface > 0)) {
+      throw InputError(list->items.front().mark, b.child_path("coefficients") + "[0]",
+                       "c0 is the surface hardness H(0) and must be > 0");
+    }
+    // A measured fit must stay positive where it is used: look for H <= 0 on
+    // a fine grid of [0, valid_depth] (a cubic has at most 2 extrema, so a
+    // dip between 1000 samples would be narrower than 0.1 % of the range).
+    constexpr int kChecks = 1000;
+    for (int k = 0; k <= kChecks; ++k) {
+      const double depth = h.valid_depth * k / kChecks;
+      const double value = polynomial_value(h.coefficients, depth);
+      if (!(value > 0)) {
+        b.check_range("valid_depth", h.valid_depth, 0, depth, true, true,
+                      " (the polynomial gives H = " + format_quantity(value, QuantityKind::kHardness) +
+                          " at h = " + format_length_mm(depth) + "; a measured fit must stay positive over its range)");
+      }
+    }
+    h.core = b.has("core") ? b.number("core", std::nullopt) : polynomial_value(h.coefficients, h.valid_depth);
+  } else if (kind == "table") {
+    h.kind = HardnessProfile::Kind::kTable;
+    if (!b.has("depths")) b.missing("depths", "the measured depths, e.g. [0, 1, 2, 4] mm, ascending");
+    if (!b.has("values")) b.missing("values", "the measured hardness at each depth, e.g. [596, 590, 560, 480] HB");
+    const std::vector<ListValue> depths = quantity_list(b, "depths", "wear.hardness.depths[]", depth_unit);
+    const std::vector<ListValue> values = quantity_list(b, "values", "wear.hardness.values[]", hardness_unit);
+    if (depths.size() < 2) {
+      throw InputError(b.get("depths")->mark, b.child_path("depths"),
+                       "a table needs at least 2 points (one value is a constant profile: kind: constant)");
+    }
+    if (values.size() != depths.size()) {
+      throw InputError(b.get("values")->mark, b.child_path("values"),
+                       "values has " + std::to_string(values.size()) + " items but depths has " +
+                           std::to_string(depths.size()) + "; give one hardness per depth");
+    }
+    for (std::size_t i = 0; i < depths.size(); ++i) {
+      if (i > 0 && !(depths[i].si > depths[i - 1].si)) {
+        throw InputError(depths[i].mark, depths[i].path,
+                         "depths must be strictly ascending; " + format_length_mm(depths[i].si) + " follows " +
+                             format_length_mm(depths[i - 1].si));
+      }
+      h.depths.push_back(depths[i].si);
+      h.values.push_back(values[i].si);
+    }
+    h.surface = h.values.front();
+    h.core = b.has("core") ? b.number("core", std::nullopt) : h.values.back();
+  } else {
+    h.kind = HardnessProfile::Kind::kCaseHardened;
+    h.surface = b.number("surface", std::nullopt);
+    h.core = b.number("core", std::nullopt);
+    h.case_depth = b.number("case_depth", std::nullopt);
+    h.exponent = b.number("exponent", 3.0);
+    // physics.md 11.2: delta = D / ln((Hs - Hc)/(Hlim - Hc))^(1/n) needs Hc < Hlim < Hs.
+    b.check_range("core", h.core, 0, h.surface, true, true,
+                  " (below the surface hardness " + format_quantity(h.surface, QuantityKind::kHardness) +
+                      ": a case-hardened profile drops from surface to core)");
+    h.limit = b.number("limit", 0.8 * h.surface);
+    if (!(h.limit > h.core && h.limit < h.surface)) {
+      const std::string why = " (the hardness at the case depth lies between core and surface" +
+                              std::string(b.has("limit") ? ")" : "; the default limit is 0.8 x surface, ISO 18203 SHD)");
+      if (b.has("limit")) {
+        b.check_range("limit", h.limit, h.core, h.surface, true, true, why);
+      }
+      b.check_range("core", h.core, 0, h.limit, true, true, why);
+    }
+  }
+  return h;
+}
+
+// wear: absent = not configured (coefficient 0); present = coefficient and a
+// hardness for both members are required.
+void read_wear(const Block& top, Drive& drive) {
+  const MarkedNode* node = top.get("wear");
+  if (node == nullptr) return;
+  const Block w(node, "wear", "wear", top.key_mark("wear"),
+                {"coefficient", "max_depth", "min_contact_ratio", "stop_at_case_depth", "update_profile",
+                 "profile_points", "block_fraction", "hardness", "pinion_hardness", "rack_hardness"});
+  WearSpec& wear = drive.wear;
+  const WearSpec defaults;
+  wear.coefficient = w.number("coefficient", std::nullopt);
+  wear.max_depth = w.number("max_depth", defaults.max_depth);
+  // Deeper than half the tooth thickness at the pitch line (pi m / 4) the
+  // tooth is gone before the limit is reached.
+  const double quarter_pitch = 0.25 * kPi * drive.pinion.module;
+  w.check_range("max_depth", wear.max_depth, 0, quarter_pitch, true, false,
+                " (half the tooth thickness at the pitch line, pi m / 4 = " + format_length_mm(quarter_pitch) + ")");
+  wear.min_contact_ratio = w.number("min_contact_ratio", defaults.min_contact_ratio);
+  wear.stop_at_case_depth = w.flag("stop_at_case_depth", defaults.stop_at_case_depth);
+  wear.update_profile = w.flag("update_profile", defaults.update_profile);
+  wear.profile_points = w.count("profile_points", defaults.profile_points);
+  wear.block_fraction = w.number("block_fraction", defaults.block_fraction);
+
+  const MarkedNode* both = w.get("hardness");
+  const MarkedNode* pinion = w.get("pinion_hardness");
+  const MarkedNode* rack = w.get("rack_hardness");
+  if (both == nullptr && (pinion == nullptr || rack == nullptr)) {
+    w.missing(pinion == nullptr ? (rack == nullptr ? "hardness" : "pinion_hardness") : "rack_hardness",
+              "a hardness profile for both members: wear.hardness (both), or wear.pinion_hardness and "
+              "wear.rack_hardness, e.g. {kind: constant, surface: 596 HB}");
+  }
+  if (both != nullptr) {
+    wear.pinion_hardness = read_hardness(*both, "wear.hardness");
+    wear.rack_hardness = wear.pinion_hardness;
+  }
+  if (pinion != nullptr) wear.pinion_hardness = read_hardness(*pinion, "wear.pinion_hardness");
+  if (rack != nullptr) wear.rack_hardness = read_hardness(*rack, "wear.rack_hardness");
+  if (wear.stop_at_case_depth && wear.pinion_hardness.kind != HardnessProfile::Kind::kCaseHardened &&
+      wear.rack_hardness.kind != HardnessProfile::Kind::kCaseHardened) {
+    const auto t = w.scalar("stop_at_case_depth", "");
+    throw InputError(t ? t->second : w.mark(), "wear.stop_at_case_depth",
+                     "needs a case_hardened hardness profile (kind: case_hardened, with case_depth) on the pinion "
+                     "or the rack; measured profiles have no case depth");
+  }
+}
+
+void read_duty(const Block& top, Drive& drive) {
+  const Block d(top.get("duty"), "duty", "duty", top.key_mark("duty"),
+                {"rack_meshes_per_year", "pinion_meshes_per_year"});
+  if (d.node() == nullptr) return;  // no duty: lives in cycles only
+  // The rate kind is SI (1/s) like every value; the Drive keeps per year.
+  drive.duty.rack_meshes_per_year = d.number("rack_meshes_per_year", std::nullopt) * kSecondsPerYear;
+  const double pinion = d.number("pinion_meshes_per_year", 0.0) * kSecondsPerYear;
+  drive.duty.pinion_meshes_per_year = pinion > 0 ? pinion : drive.duty.rack_meshes_per_year;
+}
+
+struct RandomInputKind {
+  const char* name;       // as written in the file
+  const char* key;        // RandomInput::key
+  QuantityKind kind;      // unit kind of its values
+};
+constexpr RandomInputKind kRandomInputs[] = {
+    {"contact_ratio", "contact_ratio", QuantityKind::kDimensionless},
+    {"wear_coefficient", "wear.coefficient", QuantityKind::kDimensionless},
+    {"load", "load", QuantityKind::kForce},
+    {"surface_hardness", "surface_hardness", QuantityKind::kHardness},
+};
+
+RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
+  if (!item.is_map()) {
+    throw InputError(item.mark, path,
+                     "expected a map {input: contact_ratio, distribution: normal, mean: ..., sd: ...}, found " +
+                         item.type_name());
+  }
+  const Block b(&item, path, "", item.mark,
+                {"input", "distribution", "mean", "sd", "median", "sigma", "lower", "upper", "scale", "shape"});
+  std::vector<std::string> inputs;
+  for (const auto& r : kRandomInputs) inputs.emplace_back(r.name);
+  if (!b.has("input")) b.missing("input", "the uncertain input: " + join(inputs, " | "));
+  const std::string input = b.choice("input", inputs, "");
+  const RandomInputKind* which = nullptr;
+  for (const auto& r : kRandomInputs) {
+    if (input == r.name) which = &r;
+  }
+  const std::vector<std::string> distributions = {"normal", "lognormal", "uniform", "weibull"};
+  if (!b.has("distribution")) b.missing("distribution", "one of " + join(distributions, " | "));
+  const std::string distribution = b.choice("distribution", distributions, "");
+
+  RandomInput out;
+  out.key = which->key;
+  std::string first;
+  std::string second;
+  bool second_is_dimensionless = false;  // sigma of ln, Weibull shape
+  if (distribution == "normal") {
+    out.distribution = RandomInput::Distribution::kNormal;
+    first = "mean";
+    second = "sd";
+  } else if (distribution == "lognormal") {
+    out.distribution = RandomInput::Distribution::kLognormal;
+    first = "median";
+    second = "sigma";
+    second_is_dimensionless = true;
+  } else if (distribution == "uniform") {
+    out.distribution = RandomInput::Distribution::kUniform;
+    first = "lower";
+    second = "upper";
+  } else {
+    out.distribution = RandomInput::Distribution::kWeibull;
+    first = "scale";
+    second = "shape";
+    second_is_dimensionless = true;
+  }
+  for (const auto& e : item.entries) {
+    if (e.key != "input" && e.key != "distribution" && e.key != first && e.key != second) {
+      throw InputError(e.key_mark, b.child_path(e.key),
+                       "'" + e.key + "' is not a parameter of a " + distribution + " distribution; its parameters: " +
+                           first + ", " + second);
+    }
+  }
+  const QuantityKind first_kind = which->kind;
+  const QuantityKind second_kind = second_is_dimensionless ? QuantityKind::kDimensionless : which->kind;
+  const auto a = b.quantity(first, first_kind);
+  if (!a) b.missing(first, Block::expected_text(first_kind) + " (" + distribution + " " + first + ")");
+  const auto c = b.quantity(second, second_kind);
+  if (!c) b.missing(second, Block::expected_text(second_kind) + " (" + distribution + " " + second + ")");
+  out.a = *a;
+  out.b = *c;
+  // Every random input is a positive physical quantity.
+  b.check_range_as(first, first_kind, out.a, 0, kInf, true, true, " (" + input + " is positive)");
+  if (out.distribution == RandomInput::Distribution::kUniform) {
+    b.check_range_as(second, second_kind, out.b, out.a, kInf, true, true, " (upper must exceed lower)");
+  } else if (out.distribution == RandomInput::Distribution::kLognormal) {
+    // sigma of ln X above 5 spans e^10 = 2e4 between -1 and +1 sd: a typo, not a scatter.
+    b.check_range_as(second, second_kind, out.b, 0, 5, true, false, " (standard deviation of ln " + input + ")");
+  } else {
+    b.check_range_as(second, second_kind, out.b, 0, kInf, true, true, "");
+  }
+  return out;
+}
+
+void read_reliability(const Block& top, Drive& drive) {
+  const Block r(top.get("reliability"), "reliability", "reliability", top.key_mark("reliability"),
+                {"samples", "seed", "sampling", "R", "times", "ks_level", "random"});
+  ReliabilitySpec& rel = drive.reliability;
+  const ReliabilitySpec defaults;
+  rel.samples = r.count("samples", defaults.samples);
+  rel.seed = static_cast<unsigned long>(r.count("seed", static_cast<int>(defaults.seed)));
+  rel.sobol = r.choice("sampling", {"pseudo", "sobol"}, defaults.sobol ? "sobol" : "pseudo") == "sobol";
+  for (const auto& v : quantity_list(r, "R", "reliability.R[]")) rel.reliabilities.push_back(v.si);
+  for (const auto& v : quantity_list(r, "times", "reliability.times[]")) rel.times.push_back(v.si);
+  rel.ks_level = r.number("ks_level", defaults.ks_level);
+  const MarkedNode* random = r.get("random");
+  if (random == nullptr) return;
+  if (random->type != MarkedNode::Type::kSequence) {
+    throw InputError(random->mark, "reliability.random",
+                     "expected a list of random inputs (- {input: contact_ratio, distribution: normal, mean: 1.536, "
+                     "sd: 0.02}), found " + random->type_name());
+  }
+  for (std::size_t i = 0; i < random->items.size(); ++i) {
+    const std::string path = "reliability.random[" + std::to_string(i) + "]";
+    RandomInput input = read_random_input(random->items[i], path);
+    for (std::size_t j = 0; j < rel.inputs.size(); ++j) {
+      if (rel.inputs[j].key == input.key) {
+        const MarkedNode* written = random->items[i].find("input");
+        throw InputError(written->mark, path + ".input",
+                         "'" + written->scalar + "' is already random in reliability.random[" + std::to_string(j) +
+                             "]; each input may appear once");
+      }
+    }
+    rel.inputs.push_back(input);
+  }
 }
 
 // The whole schema: a validated tree (overrides and variant already merged)
@@ -528,6 +991,10 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   drive.numerics.quadrature_order = num.count("quadrature_order", nd.quadrature_order);
   drive.numerics.adaptive_quadrature = num.flag("adaptive_quadrature", nd.adaptive_quadrature);
   drive.numerics.positions_per_period = num.count("positions_per_period", nd.positions_per_period);
+
+  read_wear(top, drive);
+  read_duty(top, drive);
+  read_reliability(top, drive);
   return drive;
 }
 
@@ -683,11 +1150,20 @@ std::optional<QuantityKind> problem_key_kind(std::string_view key_path) {
     if (dot == std::string::npos) return std::nullopt;
     path = "materials.*" + path.substr(dot);
   }
-  if (path.rfind("faults[", 0) == 0) {
-    const std::size_t close = path.find(']');
+  // List indices: "faults[3].depth" -> "faults[]", "reliability.times[0]" -> "reliability.times[]".
+  for (std::size_t open = path.find('['); open != std::string::npos; open = path.find('[', open + 1)) {
+    const std::size_t close = path.find(']', open);
     if (close == std::string::npos) return std::nullopt;
-    path = "faults[]" + path.substr(close + 1);
+    path.erase(open + 1, close - open - 1);
   }
+  // The three hardness maps share one schema; a single value is a constant profile.
+  for (const char* member : {"wear.pinion_hardness", "wear.rack_hardness"}) {
+    const std::string prefix(member);
+    if (path.rfind(prefix, 0) == 0 && (path.size() == prefix.size() || path[prefix.size()] == '.')) {
+      path = "wear.hardness" + path.substr(prefix.size());
+    }
+  }
+  if (path == "wear.hardness") return QuantityKind::kHardness;
   const KeySpec* s = find_spec(path);
   if (s == nullptr) return std::nullopt;
   return s->kind;

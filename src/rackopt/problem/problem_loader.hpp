@@ -25,7 +25,13 @@ namespace rackopt {
 // file name "<command line>". The file not being readable is an InputError too.
 // Everything the Drive leaves as "0 = not given" is filled in: rack face width,
 // body width, tooth offset, the rack section, the bore radius (0.5 r_f; left
-// 0 only when r_f <= 0, which the geometry rejects).
+// 0 only when r_f <= 0, which the geometry rejects), and for wear: each
+// hardness profile's core (measured data: its value at the deepest measured
+// point; constant: the surface), a case-hardened limit (0.8 x surface) and
+// duty.pinion_meshes_per_year (= the rack's). Exceptions, on purpose:
+// wear.coefficient stays 0 when the file has no `wear` section (wear not
+// configured), and duty stays 0 when it has no `duty` (lives in cycles only).
+// A `wear` section requires wear.coefficient and a hardness for both members.
 Drive load_problem(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Same, from text; `name_for_messages` is the file name used in marks and
@@ -44,8 +50,11 @@ RackSection rectangular_rack_section(double width, double height);
 
 // The quantity kind of a numeric problem key, so that other inputs (study
 // bounds, sweeps) parse its values the same way. Accepts concrete paths
-// ("materials.steel.E", "faults[0].depth"). nullopt for keys that are not
-// numbers (names, on/off switches, choices) and for unknown keys.
+// ("materials.steel.E", "faults[0].depth", "reliability.times[2]",
+// "wear.rack_hardness.case_depth"). nullopt for keys that are not numbers
+// (names, on/off switches, choices), for unknown keys, and for the
+// parameters of reliability.random[n] (their kind follows the `input`) and
+// polynomial coefficients (their unit follows depth_unit/hardness_unit).
 std::optional<QuantityKind> problem_key_kind(std::string_view key_path);
 
 }  // namespace rackopt

@@ -1,5 +1,7 @@
 #include "rackopt/units/units.hpp"
 
+#include "rackopt/core/drive.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -49,6 +51,34 @@ constexpr UnitDef kUnits[] = {
     {"mm^4", QuantityKind::kSecondMoment, 1e-12},
     {"cm^4", QuantityKind::kSecondMoment, 1e-8},
     {"m^4", QuantityKind::kSecondMoment, 1.0},
+    {"yr", QuantityKind::kTime, kSecondsPerYear},
+    {"d", QuantityKind::kTime, 86400.0},
+    {"h", QuantityKind::kTime, 3600.0},
+    {"min", QuantityKind::kTime, 60.0},
+    {"s", QuantityKind::kTime, 1.0},
+    // Brinell and Vickers numbers are kgf per mm^2 of indentation area:
+    // 1 kgf/mm^2 = 9.80665 N / 1e-6 m^2. HV = HB is an approximation (units.hpp).
+    {"HB", QuantityKind::kHardness, kPaPerHB},
+    {"HV", QuantityKind::kHardness, kPaPerHB},
+    {"MPa", QuantityKind::kHardness, 1e6},
+    {"GPa", QuantityKind::kHardness, 1e9},
+    {"Pa", QuantityKind::kHardness, 1.0},
+    {"N/mm^2", QuantityKind::kHardness, 1e6},
+    {"1/yr", QuantityKind::kRate, 1.0 / kSecondsPerYear},
+    {"1/d", QuantityKind::kRate, 1.0 / 86400.0},
+    {"1/h", QuantityKind::kRate, 1.0 / 3600.0},
+    {"1/min", QuantityKind::kRate, 1.0 / 60.0},
+    {"1/s", QuantityKind::kRate, 1.0},
+    {"Hz", QuantityKind::kRate, 1.0},
+};
+
+// Word spellings of the canonical names above, after normalize_unit.
+struct UnitAlias {
+  const char* spelling;
+  const char* canonical;
+};
+constexpr UnitAlias kAliases[] = {
+    {"year", "yr"}, {"years", "yr"}, {"day", "d"}, {"days", "d"}, {"hour", "h"}, {"hours", "h"}, {"HBW", "HB"},
 };
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
@@ -109,6 +139,27 @@ std::string normalize_unit(std::string_view unit) {
   return out;
 }
 
+// normalize_unit plus the word spellings: "years" -> "yr", and a rate
+// written "/yr", "per year", "1/year" -> "1/yr".
+std::string canonical_unit(std::string_view unit) {
+  std::string u = normalize_unit(unit);
+  std::string prefix;
+  if (starts_with(u, "per*")) {
+    prefix = "1/";
+    u = u.substr(4);
+  } else if (starts_with(u, "1/")) {
+    prefix = "1/";
+    u = u.substr(2);
+  } else if (starts_with(u, "/")) {
+    prefix = "1/";
+    u = u.substr(1);
+  }
+  for (const auto& a : kAliases) {
+    if (u == a.spelling) u = a.canonical;
+  }
+  return prefix + u;
+}
+
 std::string join_units(QuantityKind kind) {
   std::string out;
   for (const auto& name : unit_names(kind)) {
@@ -137,6 +188,9 @@ std::string example(QuantityKind kind) {
     case QuantityKind::kStiffness: return "'200 MN/m'";
     case QuantityKind::kArea: return "'3600 mm^2'";
     case QuantityKind::kSecondMoment: return "'2.15e6 mm^4'";
+    case QuantityKind::kTime: return "'60 yr'";
+    case QuantityKind::kHardness: return "'596 HB'";
+    case QuantityKind::kRate: return "'3000 1/yr'";
   }
   return "";
 }
@@ -203,6 +257,9 @@ std::string_view kind_name(QuantityKind kind) {
     case QuantityKind::kStiffness: return "stiffness";
     case QuantityKind::kArea: return "area";
     case QuantityKind::kSecondMoment: return "second moment of area";
+    case QuantityKind::kTime: return "time";
+    case QuantityKind::kHardness: return "hardness";
+    case QuantityKind::kRate: return "rate (events per time)";
   }
   return "quantity";
 }
@@ -224,7 +281,7 @@ std::vector<std::string> unit_names(QuantityKind kind) {
 
 double unit_factor(std::string_view unit, QuantityKind kind, const SourceMark& where,
                    const std::string& key_path) {
-  const std::string canonical = normalize_unit(trim(unit));
+  const std::string canonical = canonical_unit(trim(unit));
   if (canonical.empty()) {
     if (kind == QuantityKind::kDimensionless || kind == QuantityKind::kCount) return 1.0;
     return unit_factor(default_unit(kind), kind, where, key_path);
@@ -233,7 +290,8 @@ double unit_factor(std::string_view unit, QuantityKind kind, const SourceMark& w
   for (const auto& u : kUnits) {
     if (canonical != u.name) continue;
     if (u.kind == kind) return u.si_per_unit;
-    other_kind = &u;
+    // MPa is a modulus and a hardness: name the first (the commoner) kind.
+    if (other_kind == nullptr) other_kind = &u;
   }
   const std::string quoted = "'" + std::string(trim(unit)) + "'";
   if (other_kind != nullptr) {
@@ -245,14 +303,21 @@ double unit_factor(std::string_view unit, QuantityKind kind, const SourceMark& w
     throw InputError(where, key_path,
                      "unexpected text " + quoted + " after the number; expected " + allowed_text(kind));
   }
-  throw InputError(where, key_path, "unknown unit " + quoted + " for " + article(kind) + "; " + allowed_text(kind));
+  std::string hint;
+  if (kind == QuantityKind::kHardness && starts_with(canonical, "HR")) {
+    // Rockwell numbers are depths, not loads per area: no factor maps them to Pa.
+    hint = " (a Rockwell number is not proportional to a pressure: convert it to HV or HB with ISO 18265 first)";
+  }
+  throw InputError(where, key_path,
+                   "unknown unit " + quoted + " for " + article(kind) + "; " + allowed_text(kind) + hint);
 }
 
 double parse_quantity(std::string_view text, QuantityKind kind, const SourceMark& where,
-                      const std::string& key_path) {
+                      const std::string& key_path, std::string_view bare_unit) {
   if (kind == QuantityKind::kCount) return parse_count(text, where, key_path);
   const NumberSplit split = split_number(text, kind, where, key_path);
-  const double si = split.value * unit_factor(split.rest, kind, where, key_path);
+  const std::string_view unit = split.rest.empty() ? bare_unit : split.rest;
+  const double si = split.value * unit_factor(unit, kind, where, key_path);
   if (!std::isfinite(si)) {
     throw InputError(where, key_path, "'" + std::string(trim(text)) + "' overflows when converted to SI units");
   }
@@ -282,7 +347,7 @@ std::string format_quantity(double value_si, QuantityKind kind, std::string_view
   if (kind == QuantityKind::kDimensionless || kind == QuantityKind::kCount) {
     return format_number(value_si, significant_digits);
   }
-  const std::string wanted = normalize_unit(unit.empty() ? default_unit(kind) : unit);
+  const std::string wanted = canonical_unit(unit.empty() ? default_unit(kind) : unit);
   // An unknown output unit is a programming error: print in the kind's SI
   // unit (factor 1) rather than mislabel the number.
   const UnitDef* chosen = nullptr;

@@ -5,7 +5,10 @@
 // number means the default unit of its kind, ONE per kind so that a reader
 // never has to remember a per-key convention:
 //   length mm, angle deg, modulus GPa, force N, torque N*m, stiffness N/m,
-//   area mm^2, second moment mm^4; dimensionless and count take no unit.
+//   area mm^2, second moment mm^4, time yr, hardness HB, rate 1/yr;
+//   dimensionless and count take no unit.
+// Time and rate are SI inside (s, 1/s) like everything else; years are only
+// the default for writing, because lives and duty are thought of in years.
 // docs/yaml.md lists the accepted unit names.
 #pragma once
 
@@ -28,6 +31,11 @@ enum class QuantityKind {
   kStiffness,      // N/m, N/mm, N/um, kN/mm, MN/m, GN/m
   kArea,           // m^2, cm^2, mm^2 (also mm²)
   kSecondMoment,   // m^4, cm^4, mm^4 (also mm⁴)
+  kTime,           // yr (also year, years; 1 yr = kSecondsPerYear, Julian), d (day, days), h (hour, hours), min, s
+  kHardness,       // HB (also HBW), HV, MPa, GPa, Pa, N/mm^2; SI is Pa via 1 HB = kPaPerHB.
+                   // HV is taken as 1 HV = 1 HB (both kgf/mm^2 of indentation area): an
+                   // approximation, steels differ by ~5 % and more above 450 HB (ISO 18265).
+  kRate,           // events per time: 1/yr (also /yr, per year), 1/d, 1/h, 1/min, 1/s (also Hz); SI 1/s
 };
 
 // "length", "angle", ... with an article-free noun used in messages.
@@ -53,8 +61,10 @@ double unit_factor(std::string_view unit, QuantityKind kind, const SourceMark& w
 // (listing the allowed units), a unit of another kind ("14 kg" for an angle,
 // "14 mm" for an angle), a non-finite or overflowing number, a fractional
 // count. Never returns NaN or inf.
+// `bare_unit`, when not empty, is the unit of a bare number instead of the
+// kind's default (a problem map that states `depth_unit: mm` for its list).
 double parse_quantity(std::string_view text, QuantityKind kind, const SourceMark& where = {},
-                      const std::string& key_path = {});
+                      const std::string& key_path = {}, std::string_view bare_unit = {});
 
 // Parses a whole number without unit ("22", "-3", "+4"); same errors as above.
 int parse_count(std::string_view text, const SourceMark& where = {}, const std::string& key_path = {});
