@@ -1,0 +1,792 @@
+#include "rackopt/wear/wear_life.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/fillet_foundation.hpp"
+#include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/pinion_tooth.hpp"
+#include "rackopt/stiffness/rack_tooth.hpp"
+#include "rackopt/wear/contact.hpp"
+#include "rackopt/wear/hardness.hpp"
+
+namespace rackopt {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kPinion = 0;
+constexpr int kRack = 1;
+
+[[noreturn]] void bad(const std::string& key, const std::string& what) { throw InputError(SourceMark{}, key, what); }
+
+// G(h) = integral_0^h H(t) dt with H piecewise linear between `cells` + 1
+// exact nodes on [0, D]. G is then piecewise quadratic and is inverted exactly
+// cell by cell. Archard with frozen load, dh/dn = K q / H(h), integrates to
+// G(h1) - G(h0) = K q dn exactly for any hardness profile (up to the
+// piecewise-linear H, 1024 cells over the wear depth).
+class HardnessIntegral {
+ public:
+  HardnessIntegral() = default;
+  HardnessIntegral(const HardnessModel& model, double depth_max, int cells = 1024)
+      : D_(depth_max), dh_(depth_max / cells), H_(cells + 1), G_(cells + 1) {
+    for (int k = 0; k <= cells; ++k) H_[k] = model(k * dh_);
+    G_[0] = 0;
+    for (int k = 1; k <= cells; ++k) G_[k] = G_[k - 1] + 0.5 * (H_[k - 1] + H_[k]) * dh_;
+  }
+  double total() const { return G_.back(); }
+  double depth_max() const { return D_; }
+  double G(double h) const {
+    if (h <= 0) return 0;
+    if (h >= D_) return G_.back();
+    const int n = static_cast<int>(H_.size()) - 1;
+    const int k = std::min(static_cast<int>(h / dh_), n - 1);
+    const double t = h - k * dh_;
+    return G_[k] + H_[k] * t + 0.5 * (H_[k + 1] - H_[k]) / dh_ * t * t;
+  }
+  double inverse(double g) const {
+    if (g <= 0) return 0;
+    if (g >= G_.back()) return D_;
+    const auto it = std::upper_bound(G_.begin(), G_.end(), g);
+    const int k = static_cast<int>(it - G_.begin()) - 1;
+    const double r = g - G_[k];
+    const double beta = (H_[k + 1] - H_[k]) / dh_;
+    // 0.5 beta t^2 + H_k t - r = 0, stable root (H > 0).
+    const double t = 2.0 * r / (H_[k] + std::sqrt(std::max(H_[k] * H_[k] + 2.0 * beta * r, 0.0)));
+    return std::min(k * dh_ + t, D_);
+  }
+
+ private:
+  double D_ = 0, dh_ = 0;
+  std::vector<double> H_, G_;
+};
+
+// Semicircle (elliptic pressure) weight integrals on [-1, 1]:
+// F0' = sqrt(1-u^2), F1' = u sqrt(1-u^2).
+double F0(double u) { return 0.5 * (u * std::sqrt(std::max(1.0 - u * u, 0.0)) + std::asin(u)); }
+double F1(double u) {
+  const double q = std::max(1.0 - u * u, 0.0);
+  return -q * std::sqrt(q) / 3.0;
+}
+
+// Everything of one realisation that stays fixed while it wears: the path,
+// the profile points, the sampled mesh positions with their pair compliances,
+// the band weights and the sliding ratios.
+struct Path {
+  double s_start = 0, eps = 0, clearance = 0;
+  int N = 0;
+  double ds = 0;
+  std::vector<double> s;  // profile points
+  // Mesh positions: position k has pairs pos_begin[k] .. pos_begin[k+1]-1 (load nodes).
+  std::vector<int> pos_begin;
+  std::vector<double> node_c;     // LOA coordinate of each load node
+  std::vector<double> node_comp;  // local compliance of that pair [m/N]
+  // Load nodes grouped by pair and zone into intervals of the path, sorted along s.
+  std::vector<std::vector<int>> intervals;
+  // Band-averaging weights per member (CSR): <w>_i = sum_k val[k] P[idx[k]].
+  std::array<std::vector<int>, 2> w_begin, w_idx;
+  std::array<std::vector<double>, 2> w_val;
+  std::array<std::vector<double>, 2> slide;  // |s - s_P| / v_i per point
+};
+
+}  // namespace
+
+struct WearModel::Impl {
+  Drive drive;
+  WearOptions opt;
+  MeshGeometry geo;
+  std::vector<std::string> warnings;
+
+  double a0 = 0, sa = 0, ta = 0, r = 0, rb = 0, sP = 0, s_end = 0, pb = 0;
+  double s_start_nom = 0, eps_nom = 0, s_lo = 0, eps_max = 0;
+  double b = 0, e_star = 0, force = 0, K = 0;
+  double datum_shift = 0;   // x m - h_a2* m: s_A = s_P + (datum_shift + Delta)/sin a0
+  double rack_dedendum = 0, rack_height = 0;
+  double s_floor = 0;
+  double rho_pinion = 1;   // pinion passes per rack pass
+  double min_cr = 1;
+
+  // Local compliance tables (rigid rack body): pinion tooth + fillet + Hertz
+  // against s; rack tooth against contact height above its root line.
+  double cp_lo = 0, cp_ds = 0;
+  std::vector<double> cp;
+  double cr_dy = 0;
+  std::vector<double> cr;
+
+  std::array<HardnessModel, 2> hardness;
+  std::array<HardnessIntegral, 2> G;
+  std::array<double, 2> limit{};          // failure depth per member [m]
+  std::array<bool, 2> limit_is_case{};
+
+  Impl(const Drive& d, WearOptions o)
+      : drive(d),
+        opt(o),
+        geo(build_mesh_geometry(d)),
+        hardness{HardnessModel(d.wear.pinion_hardness, "wear.pinion_hardness"),
+                 HardnessModel(d.wear.rack_hardness, "wear.rack_hardness")} {
+    const WearSpec& w = drive.wear;
+    if (!(w.coefficient > 0) || !std::isfinite(w.coefficient))
+      bad("wear.coefficient", "wear is not configured: the Archard coefficient K must be positive");
+    if (!(w.max_depth > 0) || !std::isfinite(w.max_depth)) bad("wear.max_depth", "must be positive and finite");
+    if (!std::isfinite(w.min_contact_ratio) || w.min_contact_ratio < 0)
+      bad("wear.min_contact_ratio", "must be >= 0 and finite");
+    if (w.profile_points < 3) bad("wear.profile_points", "at least 3 points per profile are needed");
+    if (!(w.block_fraction > 0 && w.block_fraction <= 1)) bad("wear.block_fraction", "must lie in (0, 1]");
+    if (!(drive.duty.rack_meshes_per_year >= 0) || !std::isfinite(drive.duty.rack_meshes_per_year))
+      bad("duty.rack_meshes_per_year", "must be >= 0 and finite");
+    if (!(drive.duty.pinion_meshes_per_year >= 0) || !std::isfinite(drive.duty.pinion_meshes_per_year))
+      bad("duty.pinion_meshes_per_year", "must be >= 0 and finite");
+    if (drive.duty.pinion_meshes_per_year > 0 && !(drive.duty.rack_meshes_per_year > 0))
+      bad("duty.rack_meshes_per_year", "must be given when duty.pinion_meshes_per_year is");
+    if (!(drive.load.force > 0) || !std::isfinite(drive.load.force))
+      bad("load.force", "wear needs a positive mesh force");
+    if (!(opt.positions_per_point > 0)) bad("", "WearOptions.positions_per_point must be positive");
+
+    warnings = geo.warnings;
+    K = w.coefficient;
+    force = drive.load.force;
+    min_cr = w.min_contact_ratio;
+    a0 = drive.pinion.pressure_angle;
+    sa = std::sin(a0);
+    ta = std::tan(a0);
+    r = geo.pinion.pitch_radius;
+    rb = geo.pinion.base_radius;
+    sP = geo.path.s_pitch;
+    s_end = geo.path.s_end;
+    pb = geo.path.base_pitch;
+    s_start_nom = geo.path.s_start;
+    eps_nom = geo.path.contact_ratio;
+    s_floor = 1e-3 * rb;
+    if (drive.duty.rack_meshes_per_year > 0 && drive.duty.pinion_meshes_per_year > 0)
+      rho_pinion = drive.duty.pinion_meshes_per_year / drive.duty.rack_meshes_per_year;
+    const double m = drive.pinion.module;
+    datum_shift = (drive.pinion.profile_shift - drive.rack.addendum_coef) * m;
+    rack_dedendum = geo.rack.dedendum;
+    rack_height = geo.rack.dedendum + geo.rack.addendum;
+
+    // Largest contact ratio: zero clearance, same limits as the geometry.
+    const double s_A0 = sP + datum_shift / sa;
+    s_lo = s_A0;
+    if (drive.effects.interference_limit) {
+      if (geo.path.s_form > s_A0 + 1e-4 * pb) s_lo = geo.path.s_form;
+      s_lo = std::max(s_lo, 0.0);
+    }
+    s_lo = std::min(s_lo, s_start_nom);  // the nominal path is always allowed
+    eps_max = (s_end - s_lo) / pb;
+
+    const double b_rack = drive.rack.face_width > 0 ? drive.rack.face_width : drive.pinion.face_width;
+    b = std::min(drive.pinion.face_width, b_rack);
+    e_star = effective_modulus(drive.pinion.material, drive.rack.material);
+    build_compliance_tables(b_rack);
+
+    for (int mb = 0; mb < 2; ++mb) {
+      limit[mb] = w.max_depth;
+      const double cd = hardness[mb].case_depth();
+      if (w.stop_at_case_depth && cd > 0 && cd < w.max_depth) {
+        limit[mb] = cd;
+        limit_is_case[mb] = true;
+      }
+      G[mb] = HardnessIntegral(hardness[mb], limit[mb]);
+    }
+    if (drive.effects.hertz == HertzModel::kWeberBanaschek) {
+      warnings.push_back(
+          "wear: load sharing uses the linear Hertz compliance (Weber-Banaschek is load dependent; "
+          "its share of the pair compliance is ~10%)");
+    }
+  }
+
+  void build_compliance_tables(double b_rack) {
+    const Effects& fx = drive.effects;
+    std::optional<PinionToothCompliance> pt;
+    std::optional<FilletFoundationCompliance> ff;
+    if (fx.pinion_tooth) pt.emplace(geo, drive.pinion, fx, drive.numerics);
+    if (fx.fillet_foundation) ff.emplace(geo, drive.pinion);
+    const double ch = fx.hertz == HertzModel::kOff ? 0.0 : hertz_linear_compliance(e_star, b);
+    const int n = 512;
+    cp_lo = std::min(s_lo, s_start_nom);
+    cp_ds = (s_end - cp_lo) / n;
+    cp.resize(n + 1);
+    for (int k = 0; k <= n; ++k) {
+      // The top node is evaluated exactly at s_end (the tooth model rejects
+      // radii beyond the tip, and rounding could put k*ds past it).
+      const double s = k == n ? s_end : cp_lo + k * cp_ds;
+      double c = ch;
+      if (pt) c += pt->at(s).total();
+      if (ff) c += ff->at(s, b);
+      cp[k] = c;
+    }
+    cr.assign(n + 1, 0.0);
+    cr_dy = rack_height / n;
+    if (fx.rack_tooth) {
+      const RackToothCompliance rt(geo, drive.rack, b_rack, drive.numerics);
+      for (int k = 0; k <= n; ++k) cr[k] = rt.at_height(k * cr_dy).total();
+    }
+  }
+
+  static double lerp_table(const std::vector<double>& t, double lo, double d, double x) {
+    const int n = static_cast<int>(t.size()) - 1;
+    double u = (x - lo) / d;
+    u = std::clamp(u, 0.0, static_cast<double>(n));
+    const int k = std::min(static_cast<int>(u), n - 1);
+    const double f = u - k;
+    return t[k] + f * (t[k + 1] - t[k]);
+  }
+
+  // Local pair compliance at LOA coordinate s for a rack datum at `clearance`.
+  double pair_compliance(double s, double clearance) const {
+    const double height_above_root =
+        rack_dedendum + r * sa * sa - s * sa + drive.pinion.profile_shift * drive.pinion.module + clearance;
+    return lerp_table(cp, cp_lo, cp_ds, s) + lerp_table(cr, 0.0, cr_dy, height_above_root);
+  }
+
+  // ---------------------------------------------------------------- path --
+  Path make_path(double s_start, double eps, double clearance) const {
+    Path p;
+    p.s_start = s_start;
+    p.eps = eps;
+    p.clearance = clearance;
+    p.N = drive.wear.profile_points;
+    p.ds = (s_end - s_start) / (p.N - 1);
+    p.s.resize(p.N);
+    for (int i = 0; i < p.N; ++i) p.s[i] = i == p.N - 1 ? s_end : s_start + i * p.ds;
+
+    // Zones of one period of the reference pair (phase phi in [0, p_b]):
+    // piece A [0, frac p_b] with n+1 pairs, piece B [frac p_b, p_b] with n.
+    int n = static_cast<int>(std::floor(eps + 1e-9));
+    double frac = eps - n;
+    if (frac < 1e-9) frac = 0;
+    const double dphi = p.ds / opt.positions_per_point;
+    struct Piece {
+      double lo, hi;
+      int pairs;
+    };
+    std::vector<Piece> pieces;
+    if (frac > 0) pieces.push_back({0.0, frac * pb, n + 1});
+    pieces.push_back({frac * pb, pb, n});
+    p.pos_begin.push_back(0);
+    for (const Piece& pc : pieces) {
+      const int m = std::max(2, static_cast<int>(std::ceil((pc.hi - pc.lo) / dphi)) + 1);
+      const int first_pos = static_cast<int>(p.pos_begin.size()) - 1;
+      for (int k = 0; k < m; ++k) {
+        const double phi = pc.lo + (pc.hi - pc.lo) * k / (m - 1);
+        for (int j = 0; j < pc.pairs; ++j) {
+          const double c = std::min(s_start + phi + j * pb, s_end);
+          p.node_c.push_back(c);
+          p.node_comp.push_back(pair_compliance(c, clearance));
+        }
+        p.pos_begin.push_back(static_cast<int>(p.node_c.size()));
+      }
+      for (int j = 0; j < pc.pairs; ++j) {
+        std::vector<int> iv;
+        for (int k = 0; k < m; ++k) iv.push_back(p.pos_begin[first_pos + k] + j);
+        p.intervals.push_back(std::move(iv));
+      }
+    }
+    std::sort(p.intervals.begin(), p.intervals.end(),
+              [&](const std::vector<int>& x, const std::vector<int>& y) { return p.node_c[x.front()] < p.node_c[y.front()]; });
+
+    const RackPinionSliding kin(sP, s_floor);
+    p.slide[kPinion].resize(p.N);
+    p.slide[kRack].resize(p.N);
+    for (int i = 0; i < p.N; ++i) {
+      p.slide[kPinion][i] = kin.pinion_sliding_ratio(p.s[i]);
+      p.slide[kRack][i] = kin.rack_sliding_ratio(p.s[i]);
+    }
+    return p;
+  }
+
+  // Pointwise weights: the load of the pair whose contact is at `c` (left
+  // limit at a zone transition, first/last node at the path ends).
+  static void pointwise_weights(const Path& p, double c, std::vector<int>& idx, std::vector<double>& val) {
+    for (const auto& iv : p.intervals) {
+      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
+        const double ca = p.node_c[iv[k]], cb = p.node_c[iv[k + 1]];
+        if (c >= ca && c <= cb && cb > ca) {
+          const double t = (c - ca) / (cb - ca);
+          idx.push_back(iv[k]);
+          val.push_back(1 - t);
+          idx.push_back(iv[k + 1]);
+          val.push_back(t);
+          return;
+        }
+      }
+    }
+  }
+
+  // Elliptic-pressure weighted mean of the piecewise-linear pair load over
+  // the band [c - L, c + L] (L: Hertz half-width mapped onto the LOA). Zero
+  // load outside the path. Exact for the piecewise-linear load.
+  static void band_weights(const Path& p, double c, double L, std::vector<int>& idx, std::vector<double>& val) {
+    const double k2pi = 2.0 / M_PI;
+    for (const auto& iv : p.intervals) {
+      if (p.node_c[iv.back()] <= c - L || p.node_c[iv.front()] >= c + L) continue;
+      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
+        const double ua = (p.node_c[iv[k]] - c) / L, ub = (p.node_c[iv[k + 1]] - c) / L;
+        if (!(ub > ua) || ub <= -1 || ua >= 1) continue;
+        const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);
+        const double I0 = F0(u2) - F0(u1), I1 = F1(u2) - F1(u1);
+        const double du = ub - ua;
+        idx.push_back(iv[k]);
+        val.push_back(k2pi * (ub * I0 - I1) / du);
+        idx.push_back(iv[k + 1]);
+        val.push_back(k2pi * (I1 - ua * I0) / du);
+      }
+    }
+  }
+
+  void build_weights(Path& p, const std::vector<double>& P0, double force_now) const {
+    (void)force_now;
+    for (int mb = 0; mb < 2; ++mb) {
+      auto& beg = p.w_begin[mb];
+      auto& idx = p.w_idx[mb];
+      auto& val = p.w_val[mb];
+      beg.assign(1, 0);
+      idx.clear();
+      val.clear();
+      for (int i = 0; i < p.N; ++i) {
+        const double c = p.s[i];
+        bool done = false;
+        if (opt.hertz_band) {
+          // Band width of the unworn contact at this point (frozen while it
+          // wears; a depends on sqrt(w) only).
+          std::vector<int> pi;
+          std::vector<double> pv;
+          pointwise_weights(p, c, pi, pv);
+          double w0 = 0;
+          for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
+          const double a = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
+          // Surface distance per unit LOA: rack flank tan a0, pinion involute s/r_b.
+          const double J = mb == kRack ? ta : std::max(c, s_floor) / rb;
+          const double L = a / J;
+          if (L > 1e-12 * pb) {
+            band_weights(p, c, L, idx, val);
+            done = true;
+          }
+        }
+        if (!done) pointwise_weights(p, c, idx, val);
+        beg.push_back(static_cast<int>(idx.size()));
+      }
+    }
+  }
+
+  static double interp_profile(const Path& p, const std::vector<double>& h, double c) {
+    double u = (c - p.s_start) / p.ds;
+    u = std::clamp(u, 0.0, static_cast<double>(p.N - 1));
+    const int k = std::min(static_cast<int>(u), p.N - 2);
+    const double f = u - k;
+    return h[k] + f * (h[k + 1] - h[k]);
+  }
+
+  // Unilateral load sharing at every sampled mesh position (rigid rack body,
+  // physics.md 7.6): f_j = (delta - e_j)/c_j on the active set, sum f = F.
+  // Writes each pair's signed margin (delta - e_j)/(c_j b) [N/m]: the load
+  // per width where >= 0, negative where the pair is open. Returns the loaded
+  // contact ratio (path length over which a pair carries load / p_b).
+  double solve(const Path& p, const std::vector<double>& hp, const std::vector<double>& hr, double F,
+               std::vector<double>& margin) const {
+    margin.resize(p.node_c.size());
+    const int npos = static_cast<int>(p.pos_begin.size()) - 1;
+    std::array<double, 16> e{};
+    std::array<int, 16> order{};
+    for (int k = 0; k < npos; ++k) {
+      const int a = p.pos_begin[k], n = p.pos_begin[k + 1] - a;
+      for (int j = 0; j < n; ++j) {
+        const double c = p.node_c[a + j];
+        e[j] = interp_profile(p, hp, c) + interp_profile(p, hr, c);
+        order[j] = j;
+      }
+      std::sort(order.begin(), order.begin() + n, [&](int x, int y) { return e[x] < e[y]; });
+      // The active set is a prefix in the order of increasing gap.
+      double delta = 0;
+      for (int m = n; m >= 1; --m) {
+        double sk = 0, se = 0;
+        for (int q = 0; q < m; ++q) {
+          const double kk = 1.0 / p.node_comp[a + order[q]];
+          sk += kk;
+          se += e[order[q]] * kk;
+        }
+        delta = (F + se) / sk;
+        if (m == 1 || delta > e[order[m - 1]]) break;
+      }
+      for (int j = 0; j < n; ++j) margin[a + j] = (delta - e[j]) / (p.node_comp[a + j] * b);
+    }
+    double loaded = 0;
+    for (const auto& iv : p.intervals) {
+      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
+        const double L = p.node_c[iv[k + 1]] - p.node_c[iv[k]];
+        const double ma = margin[iv[k]], mb = margin[iv[k + 1]];
+        if (ma >= 0 && mb >= 0) {
+          loaded += L;
+        } else if (ma >= 0) {
+          loaded += L * ma / (ma - mb);
+        } else if (mb >= 0) {
+          loaded += L * mb / (mb - ma);
+        }
+      }
+    }
+    return loaded / pb;
+  }
+
+  // <w>_i * sliding ratio for each member and point.
+  static void pass_loads(const Path& p, const std::vector<double>& margin, std::array<std::vector<double>, 2>& q) {
+    for (int mb = 0; mb < 2; ++mb) {
+      q[mb].resize(p.N);
+      for (int i = 0; i < p.N; ++i) {
+        double w = 0;
+        for (int k = p.w_begin[mb][i]; k < p.w_begin[mb][i + 1]; ++k)
+          w += p.w_val[mb][k] * std::max(margin[p.w_idx[mb][k]], 0.0);
+        q[mb][i] = w * p.slide[mb][i];
+      }
+    }
+  }
+
+  WearProfile profile(const Path& p, int mb, const std::vector<double>& depth) const {
+    WearProfile out;
+    out.s = p.s;
+    out.depth = depth;
+    out.position.resize(p.N);
+    out.radius_or_height.resize(p.N);
+    const double s0 = std::max(p.s_start, 0.0);
+    for (int i = 0; i < p.N; ++i) {
+      const double s = p.s[i];
+      if (mb == kPinion) {
+        const double sc = std::max(s, 0.0);
+        out.position[i] = (sc * sc - s0 * s0) / (2 * rb);
+        out.radius_or_height[i] = std::sqrt(rb * rb + s * s);
+      } else {
+        out.position[i] = (s_end - s) * ta;
+        out.radius_or_height[i] =
+            r * sa * sa - s * sa + drive.pinion.profile_shift * drive.pinion.module + p.clearance;
+      }
+    }
+    return out;
+  }
+
+  // Path of a sample; returns false (and fills `why`) when its contact ratio
+  // is out of range.
+  bool sample_path(const WearSample& smp, double& s_start, double& eps, double& clearance, std::string& criterion,
+                   std::string& why) const {
+    if (smp.contact_ratio == 0) {
+      s_start = s_start_nom;
+      eps = eps_nom;
+      clearance = drive.mounting.clearance;
+    } else {
+      eps = smp.contact_ratio;
+      s_start = s_end - eps * pb;
+      clearance = (s_start - sP) * sa - datum_shift;
+    }
+    const double need = std::max(1.0, min_cr);
+    std::ostringstream o;
+    if (eps < need) {
+      criterion = "initial_contact_ratio";
+      o << "the sampled contact ratio " << eps << " is below " << (min_cr > 1 ? "wear.min_contact_ratio " : "")
+        << need << ": the drive fails at once";
+      why = o.str();
+      return false;
+    }
+    if (eps > eps_max * (1 + 1e-12)) {
+      criterion = "contact_ratio_above_max";
+      o << "the sampled contact ratio " << eps << " exceeds the largest this pair can have, " << eps_max
+        << " (zero clearance" << (drive.effects.interference_limit ? ", interference limit" : "")
+        << "): the drive fails at once";
+      why = o.str();
+      return false;
+    }
+    return true;
+  }
+
+  static void check_sample(const WearSample& s) {
+    auto pos = [](double v, const char* key) {
+      if (!(v > 0) || !std::isfinite(v)) {
+        std::ostringstream o;
+        o << "must be positive and finite (got " << v << ")";
+        bad(key, o.str());
+      }
+    };
+    pos(s.wear_coefficient_scale, "sample.wear_coefficient_scale");
+    pos(s.force_scale, "sample.force_scale");
+    pos(s.surface_hardness_scale, "sample.surface_hardness_scale");
+    if (!std::isfinite(s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
+  }
+
+  WearLifeResult life(const WearSample& smp) const;
+};
+
+WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_sample(smp);
+  WearLifeResult res;
+  const double F = force * smp.force_scale;
+  const double Kk = K * smp.wear_coefficient_scale;
+  const double sig = smp.surface_hardness_scale;
+  const double hmax = drive.wear.max_depth;
+  const double per_year = drive.duty.rack_meshes_per_year;
+  const std::array<double, 2> rho{rho_pinion, 1.0};
+
+  double s_start = 0, eps0 = 0, clearance = 0;
+  std::string why;
+  const bool ok = sample_path(smp, s_start, eps0, clearance, res.criterion, why);
+  res.initial_contact_ratio = res.final_contact_ratio = eps0;
+  if (!ok) {
+    res.reason = why;
+    const Path p = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+    const std::vector<double> zero(p.N, 0.0);
+    res.pinion = profile(p, kPinion, zero);
+    res.rack = profile(p, kRack, zero);
+    for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
+    res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return res;
+  }
+
+  Path p = make_path(s_start, eps0, clearance);
+  const int N = p.N;
+  std::array<std::vector<double>, 2> h{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
+  std::array<std::vector<double>, 2> g = h;  // G(h) per point (model hardness units)
+  std::vector<double> margin;
+  solve(p, h[kPinion], h[kRack], F, margin);
+  build_weights(p, margin, F);
+  long solves = 1;
+  const bool update = drive.wear.update_profile;
+  const double f_blk = drive.wear.block_fraction;
+
+  // History at block boundaries for the snapshots (G is linear in n inside a block).
+  std::vector<double> hist_n{0.0}, hist_eps{eps0};
+  std::vector<double> hist_g;
+  auto push_hist = [&](double n, double e) {
+    hist_n.push_back(n);
+    hist_eps.push_back(e);
+    for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
+  };
+  for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
+
+  std::array<std::vector<double>, 2> q, rate;
+  double n = 0, eps = eps0;
+  int limiting_member = kRack, limiting_point = -1;
+  const long max_blocks = static_cast<long>(2.0 * N / f_blk) + 10;
+  for (long blk = 0;; ++blk) {
+    if (blk > max_blocks) throw std::runtime_error("wear: block limit exceeded (internal error)");
+    pass_loads(p, margin, q);
+    // dG/dn per rack pass (G in unscaled hardness units: the sample's G is sig G).
+    double n_fail = kInf, n_blk = kInf;
+    int fm = -1, fi = -1;
+    for (int mb = 0; mb < 2; ++mb) {
+      rate[mb].resize(N);
+      for (int i = 0; i < N; ++i) {
+        const double rt = Kk * q[mb][i] * rho[mb] / sig;
+        rate[mb][i] = rt;
+        if (!(rt > 0)) continue;
+        const double nf = (G[mb].total() - g[mb][i]) / rt;
+        if (nf < n_fail) {
+          n_fail = nf;
+          fm = mb;
+          fi = i;
+        }
+        if (update) n_blk = std::min(n_blk, (G[mb].G(std::min(h[mb][i] + f_blk * hmax, limit[mb])) - g[mb][i]) / rt);
+      }
+    }
+    if (fm < 0) throw DesignError("no_wear", "wear: no point of either flank slides under load");
+    res.blocks = static_cast<int>(blk + 1);
+    if (n_fail <= n_blk) {
+      for (int mb = 0; mb < 2; ++mb)
+        for (int i = 0; i < N; ++i) {
+          g[mb][i] += rate[mb][i] * n_fail;
+          h[mb][i] = G[mb].inverse(g[mb][i]);
+        }
+      g[fm][fi] = G[fm].total();
+      h[fm][fi] = limit[fm];  // finish exactly at the threshold
+      n += n_fail;
+      limiting_member = fm;
+      limiting_point = fi;
+      res.criterion = limit_is_case[fm] ? "case_depth" : "max_depth";
+      if (update) {
+        eps = solve(p, h[kPinion], h[kRack], F, margin);
+        ++solves;
+      }
+      push_hist(n, eps);
+      break;
+    }
+    const std::array<std::vector<double>, 2> g_prev = g;
+    for (int mb = 0; mb < 2; ++mb)
+      for (int i = 0; i < N; ++i) {
+        g[mb][i] += rate[mb][i] * n_blk;
+        h[mb][i] = G[mb].inverse(g[mb][i]);
+      }
+    const double eps_new = solve(p, h[kPinion], h[kRack], F, margin);
+    ++solves;
+    if (eps_new < min_cr) {
+      // Regula falsi (Illinois) on the fraction t of this block where the
+      // loaded contact ratio reaches the allowable value.
+      auto state_at = [&](double t) {
+        for (int mb = 0; mb < 2; ++mb)
+          for (int i = 0; i < N; ++i) {
+            g[mb][i] = g_prev[mb][i] + rate[mb][i] * n_blk * t;
+            h[mb][i] = G[mb].inverse(g[mb][i]);
+          }
+        ++solves;
+        return solve(p, h[kPinion], h[kRack], F, margin) - min_cr;
+      };
+      double ta_ = 0, fa = eps - min_cr, tb = 1, fb = eps_new - min_cr, t = 1, ft = fb;
+      int side = 0;
+      for (int it = 0; it < 60 && tb - ta_ > 1e-13; ++it) {
+        t = (ta_ * fb - tb * fa) / (fb - fa);
+        if (!(t > ta_ && t < tb)) t = 0.5 * (ta_ + tb);
+        ft = state_at(t);
+        if (std::abs(ft) < 1e-12) break;
+        if (ft >= 0) {
+          ta_ = t;
+          fa = ft;
+          if (side == -1) fb *= 0.5;
+          side = -1;
+        } else {
+          tb = t;
+          fb = ft;
+          if (side == 1) fa *= 0.5;
+          side = 1;
+        }
+      }
+      if (ft >= 0 && std::abs(ft) >= 1e-12) ft = state_at(t = tb);  // end on the failed side
+      n += n_blk * t;
+      eps = ft + min_cr;
+      res.criterion = "contact_ratio";
+      push_hist(n, eps);
+      break;
+    }
+    n += n_blk;
+    eps = eps_new;
+    push_hist(n, eps);
+  }
+
+  // ------------------------------------------------------------ results --
+  res.life_cycles = n;
+  res.life_pinion_cycles = n * rho_pinion;
+  res.life_years = per_year > 0 ? n / per_year : 0.0;
+  res.final_contact_ratio = eps;
+  res.pinion = profile(p, kPinion, h[kPinion]);
+  res.rack = profile(p, kRack, h[kRack]);
+  double best = -1;
+  for (int mb = 0; mb < 2; ++mb)
+    for (int i = 0; i < N; ++i)
+      if (h[mb][i] > best) {
+        best = h[mb][i];
+        res.max_depth_member = mb == kPinion ? Member::kPinion : Member::kRack;
+        res.max_depth_s = p.s[i];
+        res.max_depth_position = (mb == kPinion ? res.pinion : res.rack).position[i];
+      }
+  res.max_depth = best;
+  if (res.criterion == "contact_ratio") {
+    limiting_member = res.max_depth_member == Member::kPinion ? kPinion : kRack;
+  }
+  res.limiting_member = limiting_member == kPinion ? Member::kPinion : Member::kRack;
+  {
+    std::ostringstream o;
+    const char* who = limiting_member == kPinion ? "pinion" : "rack";
+    if (res.criterion == "contact_ratio") {
+      o << "the loaded contact ratio fell to " << eps << " (allowable " << min_cr << ") after " << n
+        << " rack passes; deepest wear " << best * 1e3 << " mm on the " << who;
+    } else {
+      o << "the " << who << " flank wore to " << limit[limiting_member] * 1e3 << " mm"
+        << (res.criterion == "case_depth" ? " (the hardened case depth)" : " (wear.max_depth)") << " at s = "
+        << p.s[limiting_point] * 1e3 << " mm after " << n << " rack passes";
+    }
+    res.reason = o.str();
+  }
+
+  // Snapshots at 25/50/75/100 % of the life.
+  const std::size_t W = 2 * static_cast<std::size_t>(N);
+  for (double frac : {0.25, 0.5, 0.75, 1.0}) {
+    const double nt = frac * n;
+    std::size_t k = 0;
+    while (k + 2 < hist_n.size() && hist_n[k + 1] < nt) ++k;
+    const double span = hist_n[k + 1] - hist_n[k];
+    const double t = span > 0 ? std::clamp((nt - hist_n[k]) / span, 0.0, 1.0) : 1.0;
+    std::array<std::vector<double>, 2> hs{std::vector<double>(N), std::vector<double>(N)};
+    for (int mb = 0; mb < 2; ++mb)
+      for (int i = 0; i < N; ++i) {
+        const double g0 = hist_g[k * W + mb * N + i], g1 = hist_g[(k + 1) * W + mb * N + i];
+        hs[mb][i] = G[mb].inverse(g0 + t * (g1 - g0));
+      }
+    if (frac == 1.0) hs = h;
+    WearSnapshot sn;
+    sn.fraction = frac;
+    sn.cycles = nt;
+    sn.years = per_year > 0 ? nt / per_year : 0.0;
+    sn.contact_ratio = hist_eps[k] + t * (hist_eps[k + 1] - hist_eps[k]);
+    sn.pinion = profile(p, kPinion, hs[kPinion]);
+    sn.rack = profile(p, kRack, hs[kRack]);
+    res.snapshots.push_back(std::move(sn));
+  }
+
+  // Warnings.
+  for (int mb = 0; mb < 2; ++mb) {
+    const double deepest = *std::max_element(h[mb].begin(), h[mb].end());
+    const HardnessModel& hm = hardness[mb];
+    if (deepest > hm.first_clamped_depth()) {
+      std::ostringstream o;
+      o << (mb == kPinion ? "wear.pinion_hardness" : "wear.rack_hardness") << ": wear reached "
+        << deepest * 1e3 << " mm, beyond the measured hardness data (clamped from "
+        << hm.first_clamped_depth() * 1e3 << " mm on to the core hardness " << hm.core() / kPaPerHB << " HB)";
+      res.warnings.push_back(o.str());
+    }
+  }
+  if (!(per_year > 0))
+    res.warnings.push_back("duty.rack_meshes_per_year not given: life in years not computed (0)");
+  if (s_start < s_floor)
+    res.warnings.push_back("path starts at or below the pinion base circle: pinion rolling speed floored at 1e-3 r_b");
+
+  res.load_solves = solves;
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+WearModel::WearModel(const Drive& drive, WearOptions options) : impl_(std::make_unique<Impl>(drive, options)) {}
+WearModel::~WearModel() = default;
+WearModel::WearModel(WearModel&&) noexcept = default;
+WearModel& WearModel::operator=(WearModel&&) noexcept = default;
+
+WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample); }
+
+WearModel::PassWear WearModel::initial_wear_per_pass(const WearSample& smp) const {
+  const Impl& m = *impl_;
+  Impl::check_sample(smp);
+  double s_start = 0, eps = 0, clearance = 0;
+  std::string crit, why;
+  if (!m.sample_path(smp, s_start, eps, clearance, crit, why)) throw DesignError(crit, why);
+  Path p = m.make_path(s_start, eps, clearance);
+  const double F = m.force * smp.force_scale;
+  std::vector<double> zero(p.N, 0.0), margin;
+  PassWear out;
+  out.contact_ratio = m.solve(p, zero, zero, F, margin);
+  m.build_weights(p, margin, F);
+  std::array<std::vector<double>, 2> q;
+  Impl::pass_loads(p, margin, q);
+  std::array<std::vector<double>, 2> dh{std::vector<double>(p.N), std::vector<double>(p.N)};
+  for (int mb = 0; mb < 2; ++mb)
+    for (int i = 0; i < p.N; ++i)
+      dh[mb][i] = m.K * smp.wear_coefficient_scale * q[mb][i] /
+                  (smp.surface_hardness_scale * m.hardness[mb](0.0));
+  out.pinion = m.profile(p, kPinion, dh[kPinion]);
+  out.rack = m.profile(p, kRack, dh[kRack]);
+  out.load_per_width.resize(p.N);
+  for (int i = 0; i < p.N; ++i) out.load_per_width[i] = q[kRack][i] / std::max(p.slide[kRack][i], 1e-300);
+  // At the pitch point the sliding ratio is 0: recompute <w> directly there.
+  for (int i = 0; i < p.N; ++i) {
+    if (p.slide[kRack][i] > 0) continue;
+    double w = 0;
+    for (int k = p.w_begin[kRack][i]; k < p.w_begin[kRack][i + 1]; ++k)
+      w += p.w_val[kRack][k] * std::max(margin[p.w_idx[kRack][k]], 0.0);
+    out.load_per_width[i] = w;
+  }
+  return out;
+}
+
+const MeshGeometry& WearModel::geometry() const { return impl_->geo; }
+double WearModel::nominal_contact_ratio() const { return impl_->eps_nom; }
+double WearModel::max_contact_ratio() const { return impl_->eps_max; }
+const std::vector<std::string>& WearModel::warnings() const { return impl_->warnings; }
+
+}  // namespace rackopt

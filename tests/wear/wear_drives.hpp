@@ -1,0 +1,46 @@
+// Test drives for the wear tests: problems/ship_lift.yaml (seed 004) with the
+// wear and duty filled in C++ (the problem loader does not read them yet).
+#pragma once
+
+#include <string>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+
+namespace rackopt::test {
+
+inline Drive ship_lift() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"); }
+
+// Seed 004's polynomial H = -0.25h^3 - 1.6786h^2 + 2h + 596 (HB, h in mm),
+// converted to SI (Pa, h in m): c_i [HB/mm^i] * kPaPerHB * 1e3^i.
+inline HardnessProfile seed004_polynomial(double valid_depth = 6.5e-3, double core = 0) {
+  HardnessProfile p;
+  p.kind = HardnessProfile::Kind::kPolynomial;
+  p.coefficients = {596 * kPaPerHB, 2 * kPaPerHB * 1e3, -1.6786 * kPaPerHB * 1e6, -0.25 * kPaPerHB * 1e9};
+  p.valid_depth = valid_depth;
+  p.core = core;
+  return p;
+}
+
+inline HardnessProfile constant_hardness(double hb) {
+  HardnessProfile p;
+  p.kind = HardnessProfile::Kind::kConstant;
+  p.surface = hb * kPaPerHB;
+  return p;
+}
+
+// Seed 004 wear set-up: K = 3e-6 (physics.md 10.5), h_max = 1.5 mm, the
+// polynomial hardness on both members, 4000 rack passes a year (an assumption:
+// only the order of magnitude matters for these tests).
+inline Drive ship_lift_wear() {
+  Drive d = ship_lift();
+  d.wear.coefficient = 3e-6;
+  d.wear.max_depth = 1.5e-3;
+  d.wear.pinion_hardness = seed004_polynomial();
+  d.wear.rack_hardness = seed004_polynomial();
+  d.wear.min_contact_ratio = 1.0;
+  d.duty.rack_meshes_per_year = 4000;
+  return d;
+}
+
+}  // namespace rackopt::test
