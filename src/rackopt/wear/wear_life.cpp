@@ -29,11 +29,11 @@ constexpr int kRack = 1;
 // exact nodes on [0, D]. G is then piecewise quadratic and is inverted exactly
 // cell by cell. Archard with frozen load, dh/dn = K q / H(h), integrates to
 // G(h1) - G(h0) = K q dn exactly for any hardness profile (up to the
-// piecewise-linear H, 1024 cells over the wear depth).
+// piecewise-linear H, 4096 cells over the wear depth).
 class HardnessIntegral {
  public:
   HardnessIntegral() = default;
-  HardnessIntegral(const HardnessModel& model, double depth_max, int cells = 1024)
+  HardnessIntegral(const HardnessModel& model, double depth_max, int cells = 4096)
       : D_(depth_max), dh_(depth_max / cells), H_(cells + 1), G_(cells + 1) {
     for (int k = 0; k <= cells; ++k) H_[k] = model(k * dh_);
     G_[0] = 0;
@@ -275,7 +275,9 @@ struct WearModel::Impl {
       for (int k = 0; k < m; ++k) {
         const double phi = pc.lo + (pc.hi - pc.lo) * k / (m - 1);
         for (int j = 0; j < pc.pairs; ++j) {
-          const double c = std::min(s_start + phi + j * pb, s_end);
+          // Snap to the path end: s_start + eps p_b may miss s_end by rounding.
+          double c = s_start + phi + j * pb;
+          if (c > s_end - 1e-9 * pb) c = s_end;
           p.node_c.push_back(c);
           p.node_comp.push_back(pair_compliance(c, clearance));
         }
@@ -325,11 +327,17 @@ struct WearModel::Impl {
     const double k2pi = 2.0 / M_PI;
     for (const auto& iv : p.intervals) {
       if (p.node_c[iv.back()] <= c - L || p.node_c[iv.front()] >= c + L) continue;
+      // F0, F1 at the previous segment's upper end are reused (asin is the cost).
+      double prev_u = std::nan(""), prev_f0 = 0, prev_f1 = 0;
       for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
         const double ua = (p.node_c[iv[k]] - c) / L, ub = (p.node_c[iv[k + 1]] - c) / L;
         if (!(ub > ua) || ub <= -1 || ua >= 1) continue;
         const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);
-        const double I0 = F0(u2) - F0(u1), I1 = F1(u2) - F1(u1);
+        const double f0a = u1 == prev_u ? prev_f0 : F0(u1), f1a = u1 == prev_u ? prev_f1 : F1(u1);
+        prev_u = u2;
+        prev_f0 = F0(u2);
+        prev_f1 = F1(u2);
+        const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
         const double du = ub - ua;
         idx.push_back(iv[k]);
         val.push_back(k2pi * (ub * I0 - I1) / du);
@@ -564,7 +572,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   };
   for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
 
-  std::array<std::vector<double>, 2> q, rate;
+  std::array<std::vector<double>, 2> q, rate, g_prev;
   double n = 0, eps = eps0;
   int limiting_member = kRack, limiting_point = -1;
   const long max_blocks = static_cast<long>(2.0 * N / f_blk) + 10;
@@ -610,7 +618,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
       push_hist(n, eps);
       break;
     }
-    const std::array<std::vector<double>, 2> g_prev = g;
+    g_prev = g;  // (buffers reused: no allocation per block)
     for (int mb = 0; mb < 2; ++mb)
       for (int i = 0; i < N; ++i) {
         g[mb][i] += rate[mb][i] * n_blk;
