@@ -53,7 +53,32 @@ class HardnessIntegral {
     if (g <= 0) return 0;
     if (g >= G_.back()) return D_;
     const auto it = std::upper_bound(G_.begin(), G_.end(), g);
-    const int k = static_cast<int>(it - G_.begin()) - 1;
+    return solve_in_cell(static_cast<int>(it - G_.begin()) - 1, g);
+  }
+  // Same result, faster when a nearby depth is known (the depth before this
+  // block): one Newton step gives the cell, a short walk corrects it.
+  double inverse_near(double g, double h_hint) const {
+    if (g <= 0) return 0;
+    if (g >= G_.back()) return D_;
+    const int n = static_cast<int>(H_.size()) - 1;
+    const double hh = std::clamp(h_hint, 0.0, D_);
+    const int kh = std::min(static_cast<int>(hh / dh_), n - 1);
+    const double guess = hh + (g - G(hh)) / H_[kh];
+    int k = std::clamp(static_cast<int>(guess / dh_), 0, n - 1);
+    for (int steps = 0; steps < 8; ++steps) {
+      if (G_[k] > g && k > 0) {
+        --k;
+      } else if (G_[k + 1] <= g && k < n - 1) {
+        ++k;
+      } else {
+        return solve_in_cell(k, g);
+      }
+    }
+    return inverse(g);
+  }
+
+ private:
+  double solve_in_cell(int k, double g) const {
     const double r = g - G_[k];
     const double beta = (H_[k + 1] - H_[k]) / dh_;
     // 0.5 beta t^2 + H_k t - r = 0, stable root (H > 0).
@@ -61,7 +86,6 @@ class HardnessIntegral {
     return std::min(k * dh_ + t, D_);
   }
 
- private:
   double D_ = 0, dh_ = 0;
   std::vector<double> H_, G_;
 };
@@ -325,6 +349,7 @@ struct WearModel::Impl {
   // load outside the path. Exact for the piecewise-linear load.
   static void band_weights(const Path& p, double c, double L, std::vector<int>& idx, std::vector<double>& val) {
     const double k2pi = 2.0 / M_PI;
+    const std::size_t first = idx.size();  // this point's weights start here
     for (const auto& iv : p.intervals) {
       if (p.node_c[iv.back()] <= c - L || p.node_c[iv.front()] >= c + L) continue;
       // F0, F1 at the previous segment's upper end are reused (asin is the cost).
@@ -339,8 +364,13 @@ struct WearModel::Impl {
         prev_f1 = F1(u2);
         const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
         const double du = ub - ua;
-        idx.push_back(iv[k]);
-        val.push_back(k2pi * (ub * I0 - I1) / du);
+        // The lower node is usually the previous segment's upper node: merge.
+        if (idx.size() > first && idx.back() == iv[k]) {
+          val.back() += k2pi * (ub * I0 - I1) / du;
+        } else {
+          idx.push_back(iv[k]);
+          val.push_back(k2pi * (ub * I0 - I1) / du);
+        }
         idx.push_back(iv[k + 1]);
         val.push_back(k2pi * (I1 - ua * I0) / du);
       }
@@ -442,12 +472,16 @@ struct WearModel::Impl {
 
   // <w>_i * sliding ratio for each member and point.
   static void pass_loads(const Path& p, const std::vector<double>& margin, std::array<std::vector<double>, 2>& q) {
+    thread_local std::vector<double> load;
+    load.resize(margin.size());
+    for (std::size_t k = 0; k < margin.size(); ++k) load[k] = std::max(margin[k], 0.0);
     for (int mb = 0; mb < 2; ++mb) {
       q[mb].resize(p.N);
+      const int* idx = p.w_idx[mb].data();
+      const double* val = p.w_val[mb].data();
       for (int i = 0; i < p.N; ++i) {
         double w = 0;
-        for (int k = p.w_begin[mb][i]; k < p.w_begin[mb][i + 1]; ++k)
-          w += p.w_val[mb][k] * std::max(margin[p.w_idx[mb][k]], 0.0);
+        for (int k = p.w_begin[mb][i]; k < p.w_begin[mb][i + 1]; ++k) w += val[k] * load[idx[k]];
         q[mb][i] = w * p.slide[mb][i];
       }
     }
@@ -603,7 +637,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
       for (int mb = 0; mb < 2; ++mb)
         for (int i = 0; i < N; ++i) {
           g[mb][i] += rate[mb][i] * n_fail;
-          h[mb][i] = G[mb].inverse(g[mb][i]);
+          h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
         }
       g[fm][fi] = G[fm].total();
       h[fm][fi] = limit[fm];  // finish exactly at the threshold
@@ -622,7 +656,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     for (int mb = 0; mb < 2; ++mb)
       for (int i = 0; i < N; ++i) {
         g[mb][i] += rate[mb][i] * n_blk;
-        h[mb][i] = G[mb].inverse(g[mb][i]);
+        h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
       }
     const double eps_new = solve(p, h[kPinion], h[kRack], F, margin);
     ++solves;
@@ -633,7 +667,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
         for (int mb = 0; mb < 2; ++mb)
           for (int i = 0; i < N; ++i) {
             g[mb][i] = g_prev[mb][i] + rate[mb][i] * n_blk * t;
-            h[mb][i] = G[mb].inverse(g[mb][i]);
+            h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
           }
         ++solves;
         return solve(p, h[kPinion], h[kRack], F, margin) - min_cr;
