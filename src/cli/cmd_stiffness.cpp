@@ -14,36 +14,6 @@
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 namespace rackopt::cli {
-namespace {
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Runs gnuplot on DIR/stiffness.gp; the PNG is written under a temporary
-// name and renamed, so a failed plot never leaves a half-written image.
-// Returns the PNG path, or "" (with a warning) when gnuplot is unavailable.
-std::string render_plot(const std::filesystem::path& dir, std::vector<std::string>& warnings) {
-  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
-    warnings.push_back("gnuplot not found: wrote stiffness.gp but no plot (install gnuplot-nox)");
-    return "";
-  }
-  const std::string cmd = "cd '" + dir.string() + "' && gnuplot stiffness.gp >/dev/null 2>gnuplot.log";
-  if (std::system(cmd.c_str()) != 0) {
-    warnings.push_back("gnuplot failed: see " + (dir / "gnuplot.log").string());
-    return "";
-  }
-  std::filesystem::remove(dir / "gnuplot.log");
-  std::error_code ec;
-  std::filesystem::rename(dir / "stiffness.png.tmp", dir / "stiffness.png", ec);
-  if (ec) {
-    warnings.push_back("could not place the plot: " + ec.message());
-    return "";
-  }
-  return (dir / "stiffness.png").string();
-}
-
-}  // namespace
 
 int cmd_check(const Args& a) {
   const rackopt::Drive drive = rackopt::load_problem(a.file, a.overrides);
@@ -86,7 +56,7 @@ int cmd_stiffness(const Args& a) {
   const std::string title = (drive.name.empty() ? fs::path(a.file).stem().string() : drive.name);
   rackopt::write_file_atomic((dir / "stiffness.gp").string(),
                              rackopt::stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
-  const std::string png = render_plot(dir, curve.warnings);
+  const std::string png = render_plot(dir, "stiffness.gp", "stiffness.png", curve.warnings);
   t.total_ms = ms_since(t0);
 
   std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve);

@@ -1,13 +1,72 @@
-// rackopt wear: not wired yet (issue 3 in progress).
+// rackopt wear: Archard wear, deterministic wear life and life at
+// reliability R by Monte Carlo (issue 3).
+#include <chrono>
+#include <filesystem>
 #include <iostream>
+#include <memory>
+#include <string>
 
 #include "cli.hpp"
+#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/output/atomic_file.hpp"
+#include "rackopt/core/progress_bar.hpp"
+#include "rackopt/output/wear_report.hpp"
+#include "rackopt/problem/problem_loader.hpp"
 
 namespace rackopt::cli {
 
-int cmd_wear(const Args&) {
-  std::cerr << "rackopt: the wear command is being built (issue 3)\n";
-  return kRunFailed;
+int cmd_wear(const Args& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Drive drive = load_problem(a.file, a.overrides);
+  WearReliabilityOptions opt;
+  opt.samples = a.samples;
+  opt.seed = a.seed;
+  opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
+  const long n = a.samples > 0 ? a.samples : drive.reliability.samples;
+  std::unique_ptr<ProgressBar> bar;
+  if (!drive.reliability.inputs.empty()) {
+    bar = std::make_unique<ProgressBar>(n, "samples");
+    opt.progress = bar.get();
+  }
+  const WearReliabilityResult r = run_wear_reliability(drive, opt);
+  bar.reset();  // finish the progress line before printing
+
+  namespace fs = std::filesystem;
+  const fs::path dir = a.out_dir.empty() ? fs::path("out") / (fs::path(a.file).stem().string() + "_wear")
+                                         : fs::path(a.out_dir);
+  const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;
+  WearFiles files;
+  std::vector<std::string> warnings;
+  files.wear_profile_csv = (dir / "wear_profile.csv").string();
+  write_file_atomic(files.wear_profile_csv, wear_profile_csv(r.nominal));
+  write_file_atomic((dir / "wear_profile.gp").string(), wear_profile_gnuplot(title));
+  files.wear_profile_png = render_plot(dir, "wear_profile.gp", "wear_profile.png", warnings);
+  if (!r.lives.empty()) {
+    files.life_samples_csv = (dir / "life_samples.csv").string();
+    write_file_atomic(files.life_samples_csv, life_samples_csv(r));
+    files.reliability_csv = (dir / "reliability.csv").string();
+    write_file_atomic(files.reliability_csv, reliability_csv(drive, r));
+    files.histogram_csv = (dir / "life_histogram.csv").string();
+    write_file_atomic(files.histogram_csv, life_histogram_csv(r));
+    write_file_atomic((dir / "life_histogram.gp").string(), life_histogram_gnuplot(title));
+    write_file_atomic((dir / "reliability.gp").string(), reliability_gnuplot(title));
+    files.histogram_png = render_plot(dir, "life_histogram.gp", "life_histogram.png", warnings);
+    files.reliability_png = render_plot(dir, "reliability.gp", "reliability.png", warnings);
+  }
+  const double total_ms = ms_since(t0);
+
+  std::string text = (drive.name.empty() ? std::string("rack drive") : drive.name) + "\n" + wear_summary(drive, r);
+  text += "  wrote " + dir.string() + "/ (wear_profile.csv" +
+          (r.lives.empty() ? std::string("") : ", life_samples.csv, reliability.csv, life_histogram.csv") +
+          " and plots)\n";
+  for (const std::string& w : warnings) text += "  warning: " + w + "\n";
+  if (a.json) {
+    std::cerr << text;
+    std::cout << wear_json(drive, r, files, total_ms) << "\n";
+  } else {
+    std::cout << text;
+  }
+  return kOk;
 }
 
 }  // namespace rackopt::cli

@@ -1,4 +1,4 @@
-#include "rackopt/output/progress_bar.hpp"
+#include "rackopt/core/progress_bar.hpp"
 
 #include <cstdio>
 
