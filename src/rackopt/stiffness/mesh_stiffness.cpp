@@ -183,7 +183,6 @@ struct MeshStiffnessModel::Impl {
       spalls.push_back(m);
       // Let the tooth models check depth against the local thickness now,
       // rather than in the middle of a curve.
-      LocalParts probe;
       if (m.member == Member::kPinion && pinion_tooth) {
         (void)pinion_tooth->at(s_end, &spalls.back().band);
       }
@@ -279,7 +278,7 @@ struct MeshStiffnessModel::Impl {
   // Pairs in mesh at X (membership decided at X + side*eps so that the left
   // and right limits at a discontinuity can both be asked for).
   template <class Parts>
-  MeshState state(double X, int side, Parts&& parts_of, bool details) const {
+  MeshState state(double X, int side, Parts&& parts_of) const {
     MeshState st;
     st.travel = X;
     const double eps_x = 1e-9 * pitch;
@@ -307,7 +306,7 @@ struct MeshStiffnessModel::Impl {
       p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
       st.pairs.push_back(p);
     }
-    solve(st, details);
+    solve(st);
     if (drive.effects.hertz == HertzModel::kWeberBanaschek && st.pairs.size() > 1) {
       // The Hertz term depends on each pair's force: fixed-point iteration on
       // the load shares (monotone, converges in a few steps).
@@ -319,14 +318,14 @@ struct MeshStiffnessModel::Impl {
           change = std::max(change, std::abs(c - p.hertz) / std::max(c, 1e-30));
           p.hertz = c;
         }
-        solve(st, details);
+        solve(st);
         if (change < 1e-10) break;
       }
     }
     return st;
   }
 
-  void solve(MeshState& st, bool /*details*/) const {
+  void solve(MeshState& st) const {
     const std::size_t n = st.pairs.size();
     st.local_stiffness = 0;
     for (const PairState& p : st.pairs) st.local_stiffness += 1.0 / p.local();
@@ -446,7 +445,7 @@ const std::vector<std::string>& MeshStiffnessModel::warnings() const { return im
 MeshState MeshStiffnessModel::at(double travel, int side) const {
   const Impl& im = *impl_;
   return im.state(
-      travel, side, [&](double s, int i, int j) { return im.local_parts(s, i, j); }, true);
+      travel, side, [&](double s, int i, int j) { return im.local_parts(s, i, j); });
 }
 
 double MeshStiffnessModel::stiffness(double travel, int side) const { return at(travel, side).stiffness; }
@@ -540,7 +539,7 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   });
 
   out.samples.reserve(probes.size());
-  for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts, true));
+  for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts));
 
   // Smooth pieces: a left-limit sample closes a piece.
   const std::size_t n = out.samples.size();
@@ -577,7 +576,7 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   out.travel_at_min = out.samples[i_min].travel;
   out.k_max = out.samples[i_max].stiffness;
   out.travel_at_max = out.samples[i_max].travel;
-  auto k_at = [&](double X) { return im.state(X, 0, parts, false).stiffness; };
+  auto k_at = [&](double X) { return im.state(X, 0, parts).stiffness; };
   const double x_tol = 1e-7 * im.pitch;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (piece[i - 1] != piece[i] || piece[i + 1] != piece[i]) continue;
