@@ -1087,8 +1087,8 @@ RackSection rectangular_rack_section(double width, double height) {
   return s;
 }
 
-Drive load_problem_text(const std::string& yaml_text, const std::string& name_for_messages,
-                        const std::vector<std::string>& overrides) {
+ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& name_for_messages,
+                              const std::vector<std::string>& overrides) {
   ParsedProblem parsed = parse_problem(yaml_text, name_for_messages, overrides);
 
   // Every variant must be valid, selected or not: a broken variant is a
@@ -1103,20 +1103,22 @@ Drive load_problem_text(const std::string& yaml_text, const std::string& name_fo
       if (!is_variant_assignment(o)) apply_override(tree, o);
     }
   };
+  ProblemTree out;
+  out.file = name_for_messages;
   if (!parsed.selected) {
     apply_value_overrides(parsed.base);
-    return build_drive(parsed.base, name_for_messages);
+    out.root = std::move(parsed.base);
+    return out;
   }
 
   const auto& [wanted, where] = *parsed.selected;
   for (const auto& v : parsed.variants) {
     if (v.key != wanted) continue;
-    MarkedNode merged = parsed.base;
-    merge_over(merged, v.value);
-    apply_value_overrides(merged);  // ordinary overrides win over the variant's values
-    Drive drive = build_drive(merged, name_for_messages);
-    drive.name += " [" + wanted + "]";
-    return drive;
+    out.root = parsed.base;
+    merge_over(out.root, v.value);
+    apply_value_overrides(out.root);  // ordinary overrides win over the variant's values
+    out.variant = wanted;
+    return out;
   }
   std::vector<std::string> names;
   for (const auto& v : parsed.variants) names.push_back(v.key);
@@ -1124,6 +1126,21 @@ Drive load_problem_text(const std::string& yaml_text, const std::string& name_fo
                    "unknown variant '" + wanted + "'; " +
                        (names.empty() ? std::string("this problem defines no variants")
                                       : "defined: " + join(names)));
+}
+
+Drive drive_from_tree(const ProblemTree& tree) {
+  Drive drive = build_drive(tree.root, tree.file);
+  if (!tree.variant.empty()) drive.name += " [" + tree.variant + "]";
+  return drive;
+}
+
+Drive load_problem_text(const std::string& yaml_text, const std::string& name_for_messages,
+                        const std::vector<std::string>& overrides) {
+  return drive_from_tree(load_problem_tree(yaml_text, name_for_messages, overrides));
+}
+
+ProblemTree load_problem_tree_file(const std::string& path, const std::vector<std::string>& overrides) {
+  return load_problem_tree(read_file(path), path, overrides);
 }
 
 Drive load_problem(const std::string& path, const std::vector<std::string>& overrides) {

@@ -12,6 +12,7 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/core/error.hpp"
+#include "rackopt/problem/marked_tree.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt {
@@ -38,6 +39,23 @@ Drive load_problem(const std::string& path, const std::vector<std::string>& over
 // (its stem) the default drive name.
 Drive load_problem_text(const std::string& yaml_text, const std::string& name_for_messages,
                         const std::vector<std::string>& overrides = {});
+
+// A problem file parsed, its selected variant merged and the overrides
+// applied, but not yet turned into a Drive: studies keep one and set design
+// variables on copies (apply_override) without re-reading the file.
+struct ProblemTree {
+  MarkedNode root;
+  std::string file;     // for messages
+  std::string variant;  // selected variant ("" = none)
+};
+
+// load_problem split in two: the tree (every variant validated, like
+// load_problem) and the drive built from a tree. load_problem_text(t, n, o)
+// == drive_from_tree(load_problem_tree(t, n, o)). Same errors as load_problem.
+ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& name_for_messages,
+                              const std::vector<std::string>& overrides = {});
+ProblemTree load_problem_tree_file(const std::string& path, const std::vector<std::string>& overrides = {});
+Drive drive_from_tree(const ProblemTree& tree);
 
 // Names of the variants a problem file defines (file order); empty if none.
 // Throws InputError like load_problem.
