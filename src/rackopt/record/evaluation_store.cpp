@@ -1,0 +1,508 @@
+#include "rackopt/record/evaluation_store.hpp"
+
+#include <sqlite3.h>
+
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace rackopt::record {
+namespace {
+
+// Bumped whenever the tables change incompatibly.
+constexpr const char* kSchemaVersion = "rackopt-evaluations 1";
+constexpr const char* kSchemaKey = "rackopt.schema";
+constexpr const char* kFingerprintKey = "rackopt.study_fingerprint";
+
+constexpr const char* kCreateSchema = R"sql(
+CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY NOT NULL, value TEXT NOT NULL) WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS variables(position INTEGER PRIMARY KEY, name TEXT NOT NULL);
+CREATE TABLE IF NOT EXISTS metric_names(metric_id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE);
+CREATE TABLE IF NOT EXISTS evaluations(
+  id INTEGER PRIMARY KEY,
+  phase TEXT NOT NULL,
+  x_hash INTEGER NOT NULL,
+  x BLOB NOT NULL,
+  objectives BLOB NOT NULL,
+  inequality BLOB NOT NULL,
+  equality BLOB NOT NULL,
+  metric_ids BLOB NOT NULL,
+  metric_values BLOB NOT NULL,
+  ok INTEGER NOT NULL,
+  message TEXT NOT NULL,
+  gradient_probe INTEGER NOT NULL,
+  seconds REAL NOT NULL);
+CREATE INDEX IF NOT EXISTS evaluations_by_x ON evaluations(x_hash);
+)sql";
+
+constexpr const char* kSelectColumns =
+    "SELECT id, phase, x, objectives, inequality, equality, metric_ids, metric_values, ok, message, "
+    "gradient_probe, seconds FROM evaluations ";
+
+// --- little-endian byte encoding of numbers (bit exact, portable files) -----
+template <class T>
+void put_le(std::string& out, T value) {
+  static_assert(sizeof(T) == 8);
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  for (int b = 0; b < 8; ++b) out.push_back(static_cast<char>((bits >> (8 * b)) & 0xffu));
+}
+
+template <class T>
+T get_le(const unsigned char* p) {
+  std::uint64_t bits = 0;
+  for (int b = 0; b < 8; ++b) bits |= static_cast<std::uint64_t>(p[b]) << (8 * b);
+  return std::bit_cast<T>(bits);
+}
+
+std::string encode_doubles(std::span<const double> v) {
+  std::string out;
+  out.reserve(8 * v.size());
+  for (double d : v) put_le(out, d);
+  return out;
+}
+
+// FNV-1a over the encoded bytes: the index key of x (equality is then
+// checked on the full blob, so collisions only cost a comparison).
+std::int64_t hash_bytes(const std::string& bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return std::bit_cast<std::int64_t>(h);
+}
+
+struct StmtDeleter {
+  void operator()(sqlite3_stmt* s) const { sqlite3_finalize(s); }
+};
+using Stmt = std::unique_ptr<sqlite3_stmt, StmtDeleter>;
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+struct EvaluationStore::Impl {
+  std::string path;
+  StoreOptions options;
+  sqlite3* db = nullptr;
+  std::vector<std::string> variables;
+  std::vector<std::string> metric_by_id;  // metric_id - 1 -> name
+  std::unordered_map<std::string, std::int64_t> metric_ids;
+  std::size_t count = 0, failed = 0, committed = 0;
+  std::size_t pending = 0;  // appends in the open transaction
+  bool in_transaction = false;
+  std::chrono::steady_clock::time_point last_commit = std::chrono::steady_clock::now();
+  Stmt insert_eval, insert_metric_name, find_by_x, begin, commit;
+
+  ~Impl() {
+    try {
+      finish();
+    } catch (...) {
+      // A destructor cannot report; close() is the way to see this error.
+    }
+  }
+
+  [[noreturn]] void fail(const std::string& what, int rc) const {
+    std::string detail = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    if (rc == SQLITE_BUSY || rc == SQLITE_LOCKED) {
+      throw std::runtime_error("'" + path + "' is in use by another rackopt run (or another program " +
+                               "holds it open): " + what + " failed. Wait for that run to end or " +
+                               "choose another --out folder.");
+    }
+    if (rc == SQLITE_NOTADB || rc == SQLITE_CORRUPT) {
+      throw std::runtime_error("'" + path + "' is not a readable rackopt evaluation database (" +
+                               detail + "); delete it or choose another --out folder.");
+    }
+    throw std::runtime_error("evaluation store '" + path + "': " + what + " failed: " + detail);
+  }
+
+  void exec(const char* sql, const char* what) {
+    const int rc = sqlite3_exec(db, sql, nullptr, nullptr, nullptr);
+    if (rc != SQLITE_OK) fail(what, rc);
+  }
+
+  Stmt prepare(const char* sql) const {
+    sqlite3_stmt* s = nullptr;
+    const int rc = sqlite3_prepare_v3(db, sql, -1, SQLITE_PREPARE_PERSISTENT, &s, nullptr);
+    if (rc != SQLITE_OK) fail(std::string("preparing \"") + sql + "\"", rc);
+    return Stmt(s);
+  }
+
+  // Steps a statement that returns no row, then resets it.
+  void run(sqlite3_stmt* s, const char* what) const {
+    const int rc = sqlite3_step(s);
+    sqlite3_reset(s);
+    sqlite3_clear_bindings(s);
+    if (rc != SQLITE_DONE) fail(what, rc);
+  }
+
+  void bind_text(sqlite3_stmt* s, int i, const std::string& v) const {
+    sqlite3_bind_text(s, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+  }
+  void bind_blob(sqlite3_stmt* s, int i, const std::string& v) const {
+    // A zero-length blob, not NULL, for empty vectors (columns are NOT NULL).
+    sqlite3_bind_blob(s, i, v.empty() ? "" : v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+  }
+
+  std::optional<std::string> read_meta(const std::string& key) const {
+    Stmt s = prepare("SELECT value FROM meta WHERE key = ?1");
+    bind_text(s.get(), 1, key);
+    const int rc = sqlite3_step(s.get());
+    if (rc == SQLITE_ROW) {
+      const auto* text = reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0));
+      return std::string(text ? text : "", static_cast<std::size_t>(sqlite3_column_bytes(s.get(), 0)));
+    }
+    if (rc != SQLITE_DONE) fail("reading meta key '" + key + "'", rc);
+    return std::nullopt;
+  }
+
+  void write_meta(const std::string& key, const std::string& value) {
+    Stmt s = prepare("INSERT INTO meta(key, value) VALUES(?1, ?2) "
+                     "ON CONFLICT(key) DO UPDATE SET value = excluded.value");
+    bind_text(s.get(), 1, key);
+    bind_text(s.get(), 2, value);
+    run(s.get(), "writing meta");
+  }
+
+  std::int64_t scalar(const char* sql) const {
+    Stmt s = prepare(sql);
+    const int rc = sqlite3_step(s.get());
+    if (rc != SQLITE_ROW) fail(sql, rc);
+    return sqlite3_column_int64(s.get(), 0);
+  }
+
+  void begin_if_needed() {
+    if (in_transaction) return;
+    run(begin.get(), "BEGIN");
+    in_transaction = true;
+  }
+
+  void commit_now() {
+    if (in_transaction) {
+      run(commit.get(), "COMMIT");
+      in_transaction = false;
+    }
+    pending = 0;
+    committed = count;
+    last_commit = std::chrono::steady_clock::now();
+  }
+
+  void finish() {
+    if (!db) return;
+    std::exception_ptr error;
+    try {
+      commit_now();
+    } catch (...) {
+      error = std::current_exception();
+    }
+    insert_eval.reset();
+    insert_metric_name.reset();
+    find_by_x.reset();
+    begin.reset();
+    commit.reset();
+    sqlite3_close_v2(db);
+    db = nullptr;
+    if (error) std::rethrow_exception(error);
+  }
+
+  void load_or_create(const std::string& study_fingerprint, const std::vector<std::string>& variable_names,
+                      bool resume);
+
+  std::int64_t metric_id(const std::string& name) {
+    if (auto it = metric_ids.find(name); it != metric_ids.end()) return it->second;
+    const auto id = static_cast<std::int64_t>(metric_by_id.size()) + 1;
+    sqlite3_bind_int64(insert_metric_name.get(), 1, id);
+    bind_text(insert_metric_name.get(), 2, name);
+    run(insert_metric_name.get(), "recording a metric name");
+    metric_by_id.push_back(name);
+    metric_ids.emplace(name, id);
+    return id;
+  }
+
+  RecordedEvaluation read_row(sqlite3_stmt* s) const {
+    auto blob_doubles = [&](int col) {
+      const int bytes = sqlite3_column_bytes(s, col);
+      const auto* p = static_cast<const unsigned char*>(sqlite3_column_blob(s, col));
+      if (bytes % 8 != 0) fail("reading a row (a number blob has " + std::to_string(bytes) + " bytes)", SQLITE_CORRUPT);
+      std::vector<double> out(static_cast<std::size_t>(bytes / 8));
+      for (std::size_t i = 0; i < out.size(); ++i) out[i] = get_le<double>(p + 8 * i);
+      return out;
+    };
+    auto text = [&](int col) {
+      const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(s, col));
+      return std::string(t ? t : "", static_cast<std::size_t>(sqlite3_column_bytes(s, col)));
+    };
+    RecordedEvaluation e;
+    e.id = sqlite3_column_int64(s, 0);
+    e.phase = text(1);
+    e.x = blob_doubles(2);
+    e.objectives = blob_doubles(3);
+    e.inequality = blob_doubles(4);
+    e.equality = blob_doubles(5);
+    {
+      const int id_bytes = sqlite3_column_bytes(s, 6);
+      const auto* ids = static_cast<const unsigned char*>(sqlite3_column_blob(s, 6));
+      const std::vector<double> values = blob_doubles(7);
+      if (id_bytes != 8 * static_cast<int>(values.size())) fail("reading a row (metric ids and values differ in count)", SQLITE_CORRUPT);
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        const auto id = get_le<std::int64_t>(ids + 8 * i);
+        if (id < 1 || id > static_cast<std::int64_t>(metric_by_id.size())) fail("reading a row (unknown metric id)", SQLITE_CORRUPT);
+        e.metrics.emplace_back(metric_by_id[static_cast<std::size_t>(id - 1)], values[i]);
+      }
+    }
+    e.ok = sqlite3_column_int(s, 8) != 0;
+    e.message = text(9);
+    e.gradient_probe = sqlite3_column_int(s, 10) != 0;
+    e.seconds = sqlite3_column_double(s, 11);
+    return e;
+  }
+
+  void require_open(const char* who) const {
+    if (!db) throw std::logic_error(std::string(who) + " on a closed evaluation store");
+  }
+
+  void check_dimension(std::size_t n, const char* who) const {
+    require_open(who);
+    if (n != variables.size()) {
+      throw std::invalid_argument(std::string(who) + ": x has " + std::to_string(n) +
+                                  " values but the study in '" + path + "' has " +
+                                  std::to_string(variables.size()) + " variables");
+    }
+  }
+};
+
+EvaluationStore::EvaluationStore(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+EvaluationStore::EvaluationStore(EvaluationStore&&) noexcept = default;
+EvaluationStore& EvaluationStore::operator=(EvaluationStore&&) noexcept = default;
+EvaluationStore::~EvaluationStore() = default;
+
+EvaluationStore EvaluationStore::open(const std::string& path, const std::string& study_fingerprint,
+                                      const std::vector<std::string>& variable_names, bool resume,
+                                      StoreOptions options) {
+  if (options.commit_every == 0) throw std::invalid_argument("EvaluationStore: commit_every must be at least 1");
+  if (!(options.commit_interval_seconds >= 0)) {
+    throw std::invalid_argument("EvaluationStore: commit_interval_seconds must be >= 0");
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->path = path;
+  impl->options = options;
+
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(parent, ec);
+    if (ec) throw std::runtime_error("cannot create folder '" + parent.string() + "': " + ec.message());
+  }
+  const int rc = sqlite3_open_v2(path.c_str(), &impl->db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+  if (rc != SQLITE_OK) impl->fail("opening", rc);
+  sqlite3_extended_result_codes(impl->db, 0);
+
+  // Exclusive locking before WAL: the lock taken by the first write below is
+  // kept until close (one writer per output folder) and no shared-memory
+  // index is needed. WAL + synchronous=FULL: a commit appends to the log and
+  // fsyncs it, and a crash mid-commit leaves the previous state intact.
+  impl->exec("PRAGMA locking_mode = EXCLUSIVE", "setting exclusive locking");
+  {
+    Stmt s = impl->prepare("PRAGMA journal_mode = WAL");
+    const int step = sqlite3_step(s.get());
+    if (step != SQLITE_ROW) impl->fail("switching to WAL mode", step);
+    const std::string mode = reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0));
+    if (mode != "wal") {
+      throw std::runtime_error("evaluation store '" + path + "': the file system refused WAL mode (got '" +
+                               mode + "'); put --out on a local disk");
+    }
+  }
+  impl->exec("PRAGMA synchronous = FULL", "setting synchronous mode");
+
+  impl->exec("BEGIN IMMEDIATE", "locking the store");
+  impl->in_transaction = true;
+  try {
+    impl->load_or_create(study_fingerprint, variable_names, resume);
+  } catch (...) {
+    // Leave the file as it was (a refused open must not claim it).
+    sqlite3_exec(impl->db, "ROLLBACK", nullptr, nullptr, nullptr);
+    impl->in_transaction = false;
+    throw;
+  }
+  impl->commit_now();
+  return EvaluationStore(std::move(impl));
+}
+
+void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
+                                           const std::vector<std::string>& variable_names, bool resume) {
+  Impl* impl = this;
+  impl->exec(kCreateSchema, "creating the tables");
+  const auto schema = impl->read_meta(kSchemaKey);
+  if (schema && *schema != kSchemaVersion) {
+    throw std::runtime_error("'" + path + "' was written by another rackopt version (" + *schema +
+                             ", this one reads " + kSchemaVersion +
+                             "); delete it or choose another --out folder.");
+  }
+  impl->count = static_cast<std::size_t>(impl->scalar("SELECT count(*) FROM evaluations"));
+  if (impl->count > 0) {
+    const auto stored = impl->read_meta(kFingerprintKey).value_or("");
+    if (stored != study_fingerprint) {
+      throw std::runtime_error("'" + path + "' holds " + std::to_string(impl->count) +
+                               " evaluations of another study (fingerprint " + stored + ", this study " +
+                               study_fingerprint +
+                               "): the study or problem definition changed since they were recorded. "
+                               "Choose another --out folder, or delete '" + path +
+                               "' to start this study afresh.");
+    }
+    if (!resume) {
+      throw std::runtime_error("'" + path + "' already holds " + std::to_string(impl->count) +
+                               " evaluations of this study. Pass --resume to continue it (recorded "
+                               "evaluations are reused, not recomputed), or choose another --out folder.");
+    }
+    Stmt s = impl->prepare("SELECT name FROM variables ORDER BY position");
+    int step;
+    while ((step = sqlite3_step(s.get())) == SQLITE_ROW) {
+      impl->variables.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0)));
+    }
+    if (step != SQLITE_DONE) impl->fail("reading variable names", step);
+    if (impl->variables != variable_names) {
+      throw std::runtime_error("'" + path + "' records other design variables than this study (same "
+                               "fingerprint but different names or order); choose another --out folder.");
+    }
+    impl->failed = static_cast<std::size_t>(impl->scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));
+  } else {
+    // Nothing recorded: the file is (re)claimed by this study.
+    impl->exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
+    impl->write_meta(kSchemaKey, kSchemaVersion);
+    impl->write_meta(kFingerprintKey, study_fingerprint);
+    Stmt s = impl->prepare("INSERT INTO variables(position, name) VALUES(?1, ?2)");
+    for (std::size_t i = 0; i < variable_names.size(); ++i) {
+      sqlite3_bind_int64(s.get(), 1, static_cast<std::int64_t>(i));
+      impl->bind_text(s.get(), 2, variable_names[i]);
+      impl->run(s.get(), "recording variable names");
+    }
+    impl->variables = variable_names;
+  }
+  {
+    Stmt s = impl->prepare("SELECT metric_id, name FROM metric_names ORDER BY metric_id");
+    int step;
+    while ((step = sqlite3_step(s.get())) == SQLITE_ROW) {
+      const std::string name(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 1)));
+      if (sqlite3_column_int64(s.get(), 0) != static_cast<std::int64_t>(impl->metric_by_id.size()) + 1) {
+        impl->fail("reading metric names (ids not contiguous)", SQLITE_CORRUPT);
+      }
+      impl->metric_by_id.push_back(name);
+      impl->metric_ids.emplace(name, static_cast<std::int64_t>(impl->metric_by_id.size()));
+    }
+    if (step != SQLITE_DONE) impl->fail("reading metric names", step);
+  }
+  impl->begin = impl->prepare("BEGIN");
+  impl->commit = impl->prepare("COMMIT");
+  impl->insert_eval = impl->prepare(
+      "INSERT INTO evaluations(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
+      "metric_values, ok, message, gradient_probe, seconds) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12)");
+  impl->insert_metric_name = impl->prepare("INSERT INTO metric_names(metric_id, name) VALUES(?1, ?2)");
+  impl->find_by_x = impl->prepare(
+      (std::string(kSelectColumns) + "WHERE x_hash = ?1 AND x = ?2 ORDER BY id LIMIT 1").c_str());
+}
+
+std::optional<RecordedEvaluation> EvaluationStore::find(std::span<const double> x) const {
+  impl_->check_dimension(x.size(), "EvaluationStore::find");
+  const std::string key = encode_doubles(x);
+  sqlite3_stmt* s = impl_->find_by_x.get();
+  sqlite3_bind_int64(s, 1, hash_bytes(key));
+  impl_->bind_blob(s, 2, key);
+  std::optional<RecordedEvaluation> out;
+  const int rc = sqlite3_step(s);
+  if (rc == SQLITE_ROW) out = impl_->read_row(s);
+  sqlite3_reset(s);
+  sqlite3_clear_bindings(s);
+  if (rc != SQLITE_ROW && rc != SQLITE_DONE) impl_->fail("looking up an evaluation", rc);
+  return out;
+}
+
+std::int64_t EvaluationStore::append(const RecordedEvaluation& e) {
+  Impl& m = *impl_;
+  m.check_dimension(e.x.size(), "EvaluationStore::append");
+  if (!std::isfinite(e.seconds)) {
+    throw std::invalid_argument("EvaluationStore::append: evaluation time must be finite");
+  }
+  m.begin_if_needed();
+  std::string ids, values;
+  for (const auto& [name, value] : e.metrics) {
+    put_le(ids, m.metric_id(name));
+    put_le(values, value);
+  }
+  const std::string x = encode_doubles(e.x);
+  sqlite3_stmt* s = m.insert_eval.get();
+  m.bind_text(s, 1, e.phase);
+  sqlite3_bind_int64(s, 2, hash_bytes(x));
+  m.bind_blob(s, 3, x);
+  m.bind_blob(s, 4, encode_doubles(e.objectives));
+  m.bind_blob(s, 5, encode_doubles(e.inequality));
+  m.bind_blob(s, 6, encode_doubles(e.equality));
+  m.bind_blob(s, 7, ids);
+  m.bind_blob(s, 8, values);
+  sqlite3_bind_int(s, 9, e.ok ? 1 : 0);
+  m.bind_text(s, 10, e.message);
+  sqlite3_bind_int(s, 11, e.gradient_probe ? 1 : 0);
+  sqlite3_bind_double(s, 12, e.seconds);
+  m.run(s, "recording an evaluation");
+  const std::int64_t id = sqlite3_last_insert_rowid(m.db);
+  ++m.count;
+  if (!e.ok) ++m.failed;
+  ++m.pending;
+  if (m.pending >= m.options.commit_every || seconds_since(m.last_commit) >= m.options.commit_interval_seconds) {
+    m.commit_now();
+  }
+  return id;
+}
+
+void EvaluationStore::flush() {
+  impl_->require_open("EvaluationStore::flush");
+  impl_->commit_now();
+}
+
+void EvaluationStore::close() { impl_->finish(); }
+
+void EvaluationStore::for_each(const std::function<void(const RecordedEvaluation&)>& visit) const {
+  impl_->require_open("EvaluationStore::for_each");
+  // A fresh statement per walk: visit() may call find() or even for_each().
+  Stmt s = impl_->prepare((std::string(kSelectColumns) + "ORDER BY id").c_str());
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) visit(impl_->read_row(s.get()));
+  if (rc != SQLITE_DONE) impl_->fail("reading evaluations", rc);
+}
+
+std::vector<RecordedEvaluation> EvaluationStore::all() const {
+  std::vector<RecordedEvaluation> out;
+  out.reserve(impl_->count);
+  for_each([&](const RecordedEvaluation& e) { out.push_back(e); });
+  return out;
+}
+
+std::size_t EvaluationStore::size() const { return impl_->count; }
+std::size_t EvaluationStore::failed_count() const { return impl_->failed; }
+std::size_t EvaluationStore::committed_size() const { return impl_->committed; }
+std::size_t EvaluationStore::dimension() const { return impl_->variables.size(); }
+const std::vector<std::string>& EvaluationStore::variable_names() const { return impl_->variables; }
+std::vector<std::string> EvaluationStore::metric_names() const { return impl_->metric_by_id; }
+const std::string& EvaluationStore::path() const { return impl_->path; }
+
+void EvaluationStore::set_meta(const std::string& key, const std::string& value) {
+  if (key.rfind("rackopt.", 0) == 0) {
+    throw std::invalid_argument("EvaluationStore::set_meta: keys starting with 'rackopt.' are reserved ('" + key + "')");
+  }
+  impl_->require_open("EvaluationStore::set_meta");
+  impl_->begin_if_needed();
+  impl_->write_meta(key, value);
+  impl_->commit_now();
+}
+
+std::optional<std::string> EvaluationStore::meta(const std::string& key) const {
+  impl_->require_open("EvaluationStore::meta");
+  return impl_->read_meta(key);
+}
+
+}  // namespace rackopt::record

@@ -1,0 +1,144 @@
+// The study recorder: every evaluation of a study (optimizer, sweep, Pareto)
+// appended to <out>/evaluations.sqlite as it happens, so that an interrupted
+// study (Ctrl-C, kill -9, power cut) can resume without losing or repeating
+// recorded work. See docs/recorder.md for the schema and the guarantees.
+//
+// Resume contract (carried out by the study runner): the runner re-runs the
+// same deterministic driver; before evaluating a design x it calls find(x)
+// and, on a hit, hands the recorded result to the solver instead of
+// evaluating. Keys are the exact bit patterns of x, so a deterministic driver
+// reproduces them and ends with the same result as an uninterrupted run.
+//
+// An EvaluationStore is one SQLite connection holding an exclusive lock on
+// the file for its whole life: a second store (in this or another process)
+// on the same file is refused, which keeps two runs from writing one output
+// folder. Not thread-safe: call it from one thread (the one that drives the
+// solver), including the const methods.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rackopt::record {
+
+// One evaluation as recorded. Every double round-trips bit for bit (stored as
+// raw little-endian IEEE-754 bytes), including -0.0, denormals, infinities and
+// NaN payloads inside objectives/constraints/metrics; `seconds` is stored as
+// an SQLite REAL and must be finite.
+struct RecordedEvaluation {
+  std::int64_t id = 0;  // row id, assigned by append(): 1, 2, 3, ... in append order
+  std::string phase;    // free text set by the runner: "start 0", "pareto point 3", "sweep"
+  std::vector<double> x;  // design vector (SI), one value per variable of the store
+  std::vector<double> objectives, inequality, equality;  // as computed; may be empty when !ok
+  std::vector<std::pair<std::string, double>> metrics;   // named metric values (SI), in given order
+  bool ok = true;
+  std::string message;  // why a failed evaluation failed (may be set for ok ones too)
+  bool gradient_probe = false;  // made for a finite-difference gradient
+  double seconds = 0;           // wall time of the evaluation
+};
+
+// When buffered appends become durable (see EvaluationStore::append).
+struct StoreOptions {
+  std::size_t commit_every = 1000;       // commit once this many appends are pending (>= 1)
+  double commit_interval_seconds = 0.2;  // ... or once an append comes this long after the last commit
+};
+
+class EvaluationStore {
+ public:
+  // Opens the store at `path`, creating the file and missing parent folders.
+  //  * `study_fingerprint` identifies the study definition (the runner passes
+  //    a hash of the normalized study + problem). If the file already holds
+  //    evaluations recorded under another fingerprint, throws
+  //    std::runtime_error saying the folder holds another study's results and
+  //    to choose another --out or delete the file.
+  //  * resume == false on a file that already holds evaluations of this study
+  //    throws std::runtime_error suggesting --resume or another --out.
+  //  * A file with no evaluation (new, or left by a run that recorded nothing)
+  //    takes the given fingerprint and variable names whatever resume says.
+  //  * `variable_names` (the dimension of every x) are stored in the file.
+  // Also throws std::runtime_error when the file is not a rackopt evaluation
+  // database, has another schema version, or is held by another store.
+  static EvaluationStore open(const std::string& path, const std::string& study_fingerprint,
+                              const std::vector<std::string>& variable_names, bool resume,
+                              StoreOptions options = {});
+
+  EvaluationStore(EvaluationStore&&) noexcept;
+  EvaluationStore& operator=(EvaluationStore&&) noexcept;
+  // Commits pending appends and closes the file (errors are swallowed here;
+  // call close() to see them).
+  ~EvaluationStore();
+
+  // The earliest recorded evaluation whose x has exactly the bit pattern of
+  // `x` (so -0.0 and +0.0 are different keys; a deterministic driver
+  // reproduces its own bits), or nothing. Sees appends not yet committed.
+  // Throws std::invalid_argument when x.size() != dimension().
+  std::optional<RecordedEvaluation> find(std::span<const double> x) const;
+
+  // Records `e` (its id is ignored) and returns the new id. The row is written
+  // at once into the open transaction (find() and all() see it); it becomes
+  // durable when that transaction commits, which happens within this call as
+  // soon as commit_every appends are pending or commit_interval_seconds have
+  // passed since the last commit, and in flush(), set_meta(), close() and the
+  // destructor. A kill -9 therefore loses exactly the appends made since the
+  // last commit (at most commit_every of them, all made within
+  // commit_interval_seconds of the previous append that committed); nothing
+  // committed is lost and no row is ever half written. Commits are fsynced
+  // (synchronous=FULL), so the same holds for an OS crash or power cut.
+  // Throws std::invalid_argument when e.x.size() != dimension() or e.seconds
+  // is not finite; std::runtime_error when the disk write fails.
+  std::int64_t append(const RecordedEvaluation& e);
+
+  // Commits pending appends now (durable when it returns).
+  void flush();
+  // flush(), then closes the file; the store is unusable afterwards.
+  void close();
+
+  // Every recorded evaluation in id order.
+  std::vector<RecordedEvaluation> all() const;
+  // Calls `visit` for each recorded evaluation in id order without holding
+  // them all in memory (for exports of big studies).
+  void for_each(const std::function<void(const RecordedEvaluation&)>& visit) const;
+
+  std::size_t size() const;            // evaluations recorded (committed or not)
+  std::size_t failed_count() const;    // of which !ok
+  std::size_t committed_size() const;  // evaluations already durable on disk
+  std::size_t dimension() const;       // variables per x
+  const std::vector<std::string>& variable_names() const;
+  // Every metric name seen so far, in order of first appearance.
+  std::vector<std::string> metric_names() const;
+  const std::string& path() const;
+
+  // Free key/value pairs of the study (status "running"/"finished", summary
+  // JSON, ...). set_meta commits at once. Keys starting with "rackopt." are
+  // reserved for the store itself (std::invalid_argument).
+  void set_meta(const std::string& key, const std::string& value);
+  std::optional<std::string> meta(const std::string& key) const;
+
+ private:
+  struct Impl;
+  explicit EvaluationStore(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+// Writes every evaluation of `store` to `path` as CSV (RFC 4180 quoting,
+// '\n' line ends like the project's other CSVs),
+// atomically: a temporary file in the same folder, fsynced, then renamed over
+// `path`, so a reader never sees a half-written table. Columns:
+//   id, phase, ok (1/0), message, gradient_probe (1/0), seconds,
+//   one column per variable_names entry (x values, SI),
+//   objective_0.., inequality_0.., equality_0.. (as many as the longest row),
+//   one column per metric_names entry (SI; empty where a row lacks it).
+// Numbers are written in the shortest form that reads back to the same double.
+// Throws std::invalid_argument when variable_names.size() != store.dimension(),
+// std::runtime_error naming the path when the file cannot be written.
+void write_evaluations_csv(const EvaluationStore& store, const std::vector<std::string>& variable_names,
+                           const std::vector<std::string>& metric_names, const std::string& path);
+
+}  // namespace rackopt::record
