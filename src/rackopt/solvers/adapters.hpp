@@ -1,0 +1,49 @@
+// Internal to the solver adapters: one start of NLopt or Ipopt on an
+// EvaluationTracker, and the NLopt algorithm table the settings check uses.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rackopt/solvers/evaluation_tracker.hpp"
+#include "rackopt/solvers/solver.hpp"
+
+namespace rackopt::solvers::detail {
+
+enum class LocalSolver { kNone, kOptional, kRequired };
+
+// What NLopt 2.7.1 (libnlopt_cxx, as packaged in Debian 12) accepts; each
+// row was checked on this machine by adding an inequality / equality
+// mconstraint and running a small problem (docs/solvers.md).
+struct NloptAlgorithmInfo {
+  const char* name;        // without the NLOPT_ prefix
+  int id;                  // nlopt::algorithm
+  bool inequality;         // accepts nonlinear inequality constraints
+  bool equality;           // accepts nonlinear equality constraints
+  LocalSolver local;       // needs / accepts a local_algorithm
+  bool derivative;         // asks for gradients (we give finite differences)
+  bool global;             // searches the whole box
+  const char* note;        // one line for the docs table and messages
+};
+
+const std::vector<NloptAlgorithmInfo>& nlopt_algorithm_table();
+// nullptr when unknown. Accepts any case and an optional "NLOPT_" prefix.
+const NloptAlgorithmInfo* find_nlopt_algorithm(const std::string& name);
+
+// How one start ended, as seen by the solver ("" status when the adapter
+// halted it: the tracker's halt() tells why).
+struct StartOutcome {
+  std::string status;   // "converged" | "max_evaluations" | "max_time" | "max_iterations" | "solver_failed" | ""
+  std::string message;  // return code name (+ details)
+};
+
+// Runs one start. Rethrows whatever the model threw (after the solver has
+// returned). Throws std::invalid_argument when the solver refuses settings
+// the check did not catch.
+StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& settings,
+                             const NloptAlgorithmInfo& algorithm, const NloptAlgorithmInfo* local,
+                             std::vector<double> x_start, int start);
+StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& settings,
+                             std::vector<double> x_start, int start);
+
+}  // namespace rackopt::solvers::detail

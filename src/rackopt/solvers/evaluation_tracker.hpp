@@ -1,0 +1,152 @@
+// Internal to the solver adapters (not part of the public API): the one
+// place where the Problem is evaluated. It counts evaluations against the
+// budget, polls the stop request and the clock, caches the last few points
+// (NLopt asks for the objective and the constraints at the same x in
+// separate callbacks), computes finite-difference Jacobians, turns
+// non-finite values into failed evaluations, tells the observer, and keeps
+// the best point seen. Solvers only ever see what this class hands them.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <exception>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rackopt/solvers/problem.hpp"
+#include "rackopt/solvers/solver.hpp"
+
+namespace rackopt::solvers::detail {
+
+// Why a run was ended by the adapter (not by the solver's own tests).
+enum class Halt { kNone, kBudget, kTime, kStop, kError };
+
+// Status string of SolverResult for a halt reason ("" for kNone/kError).
+const char* halt_status(Halt h);
+
+// Thrown inside the tracker when the run must end (budget, time, stop
+// request). Every solver callback catches it; it never leaves the adapters.
+struct RunHalted {
+  Halt reason;
+};
+
+// Finite-difference derivatives of the stacked vector
+//   [objective 0, inequality..., equality...]
+// at one point, row-major: values[row * n + i] = d row / d x_i.
+struct Jacobian {
+  bool center_ok = false;      // false: the point itself failed, values are all 0
+  std::size_t rows = 0;
+  std::vector<double> values;
+};
+
+class EvaluationTracker {
+ public:
+  EvaluationTracker(const Problem& problem, const SolverSettings& settings, const SolverCallbacks& callbacks,
+                    std::vector<double> x0_clamped);
+
+  std::size_t dimension() const { return n_; }
+  std::size_t num_inequality() const { return ni_; }
+  std::size_t num_equality() const { return ne_; }
+  const std::vector<double>& lower() const { return lower_; }
+  const std::vector<double>& upper() const { return upper_; }
+
+  // Multistart number written into the observer records from now on.
+  void begin_start(int start);
+  // Evaluations made since the last begin_start().
+  std::size_t evaluations_in_start() const { return evaluations_ - start_first_index_; }
+  // True when the first evaluation of the current start failed (Ipopt then
+  // reports Invalid_Number_Detected; we say what really happened).
+  bool start_point_failed() const { return start_point_failed_; }
+  const std::string& start_point_message() const { return start_point_message_; }
+
+  // The evaluation at x (clamped into the box first). Makes at most one call
+  // of Problem::evaluate per distinct x among the last few points asked for.
+  // Throws RunHalted when the budget, the time or a stop request ends the
+  // run; lets anything evaluate() or the observer threw pass unchanged.
+  Evaluation at(const double* x, bool gradient_probe = false);
+
+  // Finite-difference Jacobian at x (see Jacobian); probes go through at()
+  // with gradient_probe = true. Cached for the last center.
+  const Jacobian& jacobian(const double* x);
+
+  // Values handed to a solver in place of a failed evaluation: worse than
+  // every objective seen so far, and clearly violated constraints.
+  double penalty_objective() const;
+  double penalty_constraint() const;
+
+  // Throws RunHalted if a stop request or the time limit says so (no
+  // evaluation is made). Used by Ipopt's intermediate callback.
+  void poll() const;
+
+  // Runs f; converts RunHalted and any other exception into a halt (the
+  // exception is stored for rethrow). Returns false when the run must stop.
+  template <class F>
+  bool guard(F&& f) noexcept {
+    if (halt_ != Halt::kNone) return false;
+    try {
+      f();
+      return true;
+    } catch (const RunHalted& h) {
+      halt_ = h.reason;
+    } catch (...) {
+      error_ = std::current_exception();
+      halt_ = Halt::kError;
+    }
+    return false;
+  }
+  Halt halt() const { return halt_; }
+  void rethrow_if_error() const {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+  // Fills x, evaluation, feasible, evaluations, failed_evaluations,
+  // gradient_evaluations and best_history (status is the caller's).
+  void fill_result(SolverResult& result) const;
+  bool any_ok() const { return ok_evaluations_ > 0; }
+  bool any_feasible() const { return has_feasible_; }
+
+ private:
+  struct CacheEntry {
+    std::vector<double> x;
+    Evaluation evaluation;
+  };
+  Evaluation sanitized(Evaluation e) const;
+  void record(const std::vector<double>& x, const Evaluation& e);
+  bool stacked(const Evaluation& e, std::vector<double>& out) const;
+
+  const Problem& problem_;
+  const SolverSettings& settings_;
+  const SolverCallbacks& callbacks_;
+  std::size_t n_, ni_, ne_;
+  std::vector<double> lower_, upper_, x0_;
+  std::chrono::steady_clock::time_point started_;
+
+  std::vector<CacheEntry> cache_;  // small ring of recent points
+  std::size_t cache_next_ = 0;
+  std::vector<double> jacobian_x_;
+  Jacobian jacobian_;
+  bool jacobian_valid_ = false;
+
+  int start_ = 0;
+  std::size_t start_first_index_ = 0;
+  bool start_point_failed_ = false;
+  std::string start_point_message_;
+
+  std::size_t evaluations_ = 0, failed_ = 0, probes_ = 0, ok_evaluations_ = 0;
+  std::vector<double> best_history_;
+  bool has_feasible_ = false, has_ok_ = false, has_x0_evaluation_ = false;
+  std::vector<double> best_x_, least_infeasible_x_;
+  Evaluation best_eval_, least_infeasible_eval_, x0_eval_;
+  double least_violation_ = std::numeric_limits<double>::infinity();
+  std::string first_failure_;
+  double best_objective_seen_ = std::numeric_limits<double>::infinity();
+  double worst_objective_seen_ = -std::numeric_limits<double>::infinity();
+  double largest_constraint_seen_ = 0.0;
+
+  Halt halt_ = Halt::kNone;
+  std::exception_ptr error_;
+};
+
+}  // namespace rackopt::solvers::detail
