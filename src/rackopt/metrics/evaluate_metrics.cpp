@@ -1,0 +1,348 @@
+#include "rackopt/metrics/evaluate_metrics.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/metrics/ks_aggregate.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace rackopt::metrics {
+namespace {
+
+// Why a model could not be computed for this design.
+struct Failure {
+  std::string code;
+  std::string message;
+};
+
+struct Outcome {
+  bool ok = true;
+  double value = 0;
+  std::string code;     // failure code
+  std::string message;  // failure reason, or a remark when ok
+};
+
+Outcome fail(const Failure& f) { return {false, 0, f.code, f.message}; }
+Outcome value(double v, std::string remark = {}) { return {true, v, {}, std::move(remark)}; }
+
+bool has(std::uint8_t bits, Requirement r) { return (bits & static_cast<std::uint8_t>(r)) != 0; }
+
+[[noreturn]] void missing(const std::string& key, const std::string& message) {
+  throw InputError(SourceMark{"<metric options>", 0, 0}, key, message);
+}
+
+std::string display(const MetricDefinition& def, double v) {
+  if (def.kind) return format_quantity(v, *def.kind, def.display_unit, 4);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g %s", v, std::string(def.unit).c_str());
+  return buf;
+}
+
+// The life at each requested R, by whichever path applies (see wear_life_at_R in docs/metrics.md).
+struct ReliabilityRun {
+  std::optional<Failure> failure;
+  std::vector<double> reliabilities;  // requested R values (distinct, request order)
+  std::vector<double> life_s;         // per R
+  std::vector<std::string> remark;    // per R
+};
+
+}  // namespace
+
+bool MetricValues::all_ok() const { return first_failure() == nullptr; }
+
+const MetricValue* MetricValues::first_failure() const {
+  for (const MetricValue& v : values) {
+    if (!v.ok) return &v;
+  }
+  return nullptr;
+}
+
+const MetricValue& MetricValues::at(std::string_view label) const {
+  for (const MetricValue& v : values) {
+    if (v.label == label) return v;
+  }
+  throw std::out_of_range("no metric value labelled '" + std::string(label) + "'");
+}
+
+void check_metric_requests(const Drive& drive, std::span<const MetricRequest> requests,
+                           const MetricOptions& o) {
+  std::uint8_t req = 0;
+  bool reliability = false;
+  for (const MetricRequest& r : requests) {
+    const MetricDefinition& def = find_metric(resolve_request(r).name);
+    req |= def.requirements;
+    reliability = reliability || def.models.contains(Model::kWearReliability);
+  }
+  if (has(req, Requirement::kWear) && !(drive.wear.coefficient > 0)) {
+    missing("wear.coefficient", "wear metrics need the problem's `wear` section (wear.coefficient > 0, hardness)");
+  }
+  if (has(req, Requirement::kDuty) && !(drive.duty.rack_meshes_per_year > 0)) {
+    missing("duty.rack_meshes_per_year", "wear lives in seconds need duty.rack_meshes_per_year > 0 "
+                                         "(wear_life_cycles needs no duty)");
+  }
+  auto nonneg = [](double v, const char* key) {
+    if (!std::isfinite(v) || v < 0) missing(key, "must be >= 0 and finite (0 = not given)");
+  };
+  nonneg(o.allowable_bending_pinion, "allowable_bending_pinion");
+  nonneg(o.allowable_bending_rack, "allowable_bending_rack");
+  nonneg(o.allowable_contact_pinion, "allowable_contact_pinion");
+  nonneg(o.allowable_contact_rack, "allowable_contact_rack");
+  nonneg(o.rack_root_radius, "rack_root_radius");
+  if (has(req, Requirement::kAllowableBending) && !(o.allowable_bending_pinion > 0)) {
+    missing("allowable_bending_pinion", "root_bending_safety needs MetricOptions::allowable_bending_pinion > 0 "
+                                        "(proposed problem key materials.<name>.allowable_bending)");
+  }
+  if (has(req, Requirement::kAllowableContact) && !(o.allowable_contact_pinion > 0)) {
+    missing("allowable_contact_pinion", "contact_safety needs MetricOptions::allowable_contact_pinion > 0 "
+                                        "(proposed problem key materials.<name>.allowable_contact)");
+  }
+  if (reliability) {
+    const std::size_t n_inputs = drive.reliability.inputs.size();
+    const bool monte_carlo = n_inputs >= 2 || (n_inputs == 1 && !o.exact_quantile);
+    if (monte_carlo && o.bootstrap_replicates < 20) missing("bootstrap_replicates", "must be >= 20");
+  }
+}
+
+MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest> requests,
+                              const MetricOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_metric_requests(drive, requests, o);
+
+  std::vector<MetricRequest> resolved;
+  std::vector<const MetricDefinition*> defs;
+  ModelSet needed;
+  for (const MetricRequest& r : requests) {
+    resolved.push_back(resolve_request(r));
+    defs.push_back(&find_metric(r.name));
+    needed.insert(defs.back()->models);
+  }
+  MetricValues out;
+
+  // --- geometry ---------------------------------------------------------
+  std::optional<MeshGeometry> geometry;
+  std::optional<Failure> geometry_failure;
+  if (needed.contains(Model::kGeometry)) {
+    out.models_run.insert(Model::kGeometry);
+    ++out.model_runs;
+    try {
+      geometry = build_mesh_geometry(drive);
+      for (const std::string& w : geometry->warnings) out.warnings.push_back(w);
+    } catch (const DesignError& e) {
+      geometry_failure = Failure{e.code(), e.what()};
+    }
+  }
+
+  // --- stiffness curve ----------------------------------------------------
+  std::optional<StiffnessCurve> curve;
+  std::optional<Failure> curve_failure;
+  if (needed.contains(Model::kStiffnessCurve)) {
+    out.models_run.insert(Model::kStiffnessCurve);
+    ++out.model_runs;
+    try {
+      const MeshStiffnessModel model(drive);
+      curve = model.curve();
+      for (const std::string& w : curve->warnings) out.warnings.push_back(w);
+    } catch (const DesignError& e) {
+      curve_failure = Failure{e.code(), e.what()};
+    }
+  }
+
+  // --- wear ------------------------------------------------------------------
+  // wear_life_at_R goes through run_wear_reliability, whose result also holds
+  // the nominal life: one wear model serves wear_life and every R.
+  //  * no random input: the deterministic life (reached with probability 1);
+  //  * one input (and exact_quantile): its exact quantile path, with one
+  //    Monte Carlo sample only (the sampled summary is not used);
+  //  * otherwise: Monte Carlo with the fixed seed, the fitted life at R
+  //    (empirical quantile when nothing could be fitted).
+  const std::vector<RandomInput>& inputs = drive.reliability.inputs;
+  const bool exact = inputs.size() == 1 && o.exact_quantile;
+  std::optional<WearLifeResult> nominal;
+  std::optional<Failure> wear_failure;
+  ReliabilityRun rel;
+  if (needed.contains(Model::kWearReliability)) {
+    for (std::size_t i = 0; i < resolved.size(); ++i) {
+      if (!defs[i]->models.contains(Model::kWearReliability)) continue;
+      const double R = *resolved[i].parameter;
+      if (std::find(rel.reliabilities.begin(), rel.reliabilities.end(), R) == rel.reliabilities.end())
+        rel.reliabilities.push_back(R);
+    }
+    out.models_run.insert(Model::kWearReliability);
+    if (needed.contains(Model::kWearLife)) out.models_run.insert(Model::kWearLife);
+    ++out.model_runs;
+    try {
+      Drive d = drive;
+      d.reliability.reliabilities = rel.reliabilities;
+      d.reliability.times.clear();
+      WearReliabilityOptions ro;
+      ro.samples = exact ? 1 : o.reliability_samples;
+      ro.seed = o.reliability_seed;
+      ro.threads = std::max(1u, o.threads);
+      ro.bootstrap_replicates = o.bootstrap_replicates;
+      const WearReliabilityResult r = run_wear_reliability(d, ro);
+      nominal = r.nominal;
+      for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
+        if (inputs.empty()) {
+          rel.life_s.push_back(r.nominal.life_years * kSecondsPerYear);
+          rel.remark.push_back("no reliability inputs: the deterministic wear life");
+        } else if (exact && r.exact.available) {
+          rel.life_s.push_back(r.exact.life_at_R_years.at(k) * kSecondsPerYear);
+          rel.remark.push_back("exact quantile of " + r.exact.input + " (life " +
+                               (r.exact.life_increases ? "increases" : "decreases") + " with it)");
+        } else {
+          const reliability::LifeAtReliability& la = r.summary.life.at(k);
+          const std::string n = std::to_string(r.summary.samples_total);
+          if (la.fit) {
+            const reliability::CandidateFit* cf = r.summary.chosen_fit();
+            rel.life_s.push_back(la.fit->estimate);
+            rel.remark.push_back("Monte Carlo, " + n + " samples, fitted " +
+                                 (cf ? cf->fit->distribution.describe() : std::string()) +
+                                 (r.summary.chosen_accepted ? "" : " (no candidate passed the KS test)"));
+          } else {
+            rel.life_s.push_back(la.empirical.estimate);
+            rel.remark.push_back("Monte Carlo, " + n + " samples, empirical quantile (no distribution could be fitted)");
+          }
+        }
+      }
+    } catch (const DesignError& e) {
+      wear_failure = Failure{e.code(), e.what()};
+      rel.failure = wear_failure;
+    }
+  } else if (needed.contains(Model::kWearLife)) {
+    out.models_run.insert(Model::kWearLife);
+    ++out.model_runs;
+    try {
+      const WearModel model(drive);
+      for (const std::string& w : model.warnings()) out.warnings.push_back(w);
+      nominal = model.life();
+    } catch (const DesignError& e) {
+      wear_failure = Failure{e.code(), e.what()};
+    }
+  }
+  if (nominal) {
+    for (const std::string& w : nominal->warnings) out.warnings.push_back(w);
+  }
+
+  // --- stresses ------------------------------------------------------------
+  std::optional<ToothStress> stress;
+  std::optional<Failure> stress_failure;
+  if (needed.contains(Model::kStress)) {
+    out.models_run.insert(Model::kStress);
+    ++out.model_runs;
+    if (geometry_failure) {
+      stress_failure = geometry_failure;
+    } else {
+      try {
+        stress = tooth_stress(drive, *geometry, o.load_factors, o.rack_root_radius);
+        if (stress->rack_root_radius_clamped) {
+          out.warnings.push_back("rack root round clamped to the largest that fits the rack space: " +
+                                 format_quantity(stress->rack_root_radius, QuantityKind::kLength, "mm", 4));
+        }
+      } catch (const DesignError& e) {
+        stress_failure = Failure{e.code(), e.what()};
+      }
+    }
+  }
+
+  // --- values --------------------------------------------------------------
+  for (std::size_t i = 0; i < resolved.size(); ++i) {
+    const MetricRequest& r = resolved[i];
+    const MetricDefinition& def = *defs[i];
+    const std::string& n = r.name;
+    Outcome oc;
+    if (def.models.contains(Model::kStiffnessCurve)) {
+      if (curve_failure) {
+        oc = fail(*curve_failure);
+      } else {
+        const StiffnessCurve& c = *curve;
+        if (n == "stiffness_fluctuation") oc = value(c.k_fluctuation);
+        else if (n == "min_stiffness") oc = value(c.k_min);
+        else if (n == "max_stiffness") oc = value(c.k_max);
+        else if (n == "mean_stiffness") oc = value(c.k_mean);
+        else {
+          // Samples plus the refined extremes, so that the KS bounds hold
+          // against k_min/k_max themselves, not only against the samples.
+          std::vector<double> k;
+          k.reserve(c.samples.size() + 2);
+          for (const MeshState& s : c.samples) k.push_back(s.stiffness);
+          k.push_back(c.k_min);
+          k.push_back(c.k_max);
+          const double rho = *r.parameter;
+          if (!(c.k_mean > 0)) {
+            oc = fail({"non_finite", "mean stiffness is not positive: KS scale undefined"});
+          } else if (n == "min_stiffness_ks") {
+            oc = value(ks_min(k, rho, c.k_mean));
+          } else if (n == "max_stiffness_ks") {
+            oc = value(ks_max(k, rho, c.k_mean));
+          } else {
+            oc = value((ks_max(k, rho, c.k_mean) - ks_min(k, rho, c.k_mean)) / c.k_mean);
+          }
+        }
+      }
+    } else if (n == "contact_ratio") {
+      oc = geometry_failure ? fail(*geometry_failure) : value(geometry->path.contact_ratio);
+    } else if (n == "supports_per_metre") {
+      oc = drive.rack.span > 0 ? value(1.0 / drive.rack.span)
+                               : fail({"non_finite", "rack.span is not positive"});
+    } else if (n == "wear_life" || n == "wear_life_cycles") {
+      if (wear_failure) {
+        oc = fail(*wear_failure);
+      } else {
+        const std::string remark = "ended by " + nominal->criterion + ": " + nominal->reason;
+        oc = value(n == "wear_life" ? nominal->life_years * kSecondsPerYear : nominal->life_cycles, remark);
+      }
+    } else if (n == "wear_life_at_R") {
+      if (rel.failure) {
+        oc = fail(*rel.failure);
+      } else {
+        const auto it = std::find(rel.reliabilities.begin(), rel.reliabilities.end(), *r.parameter);
+        const std::size_t k = static_cast<std::size_t>(it - rel.reliabilities.begin());
+        oc = value(rel.life_s.at(k), rel.remark.at(k));
+      }
+    } else if (def.models.contains(Model::kStress)) {
+      if (stress_failure) {
+        oc = fail(*stress_failure);
+      } else {
+        const ToothStress& s = *stress;
+        if (n == "root_bending_stress") {
+          oc = value(s.pinion_root_stress);
+        } else if (n == "rack_root_bending_stress") {
+          oc = value(s.rack_root_stress);
+        } else if (n == "root_bending_safety") {
+          const double rack_allow = o.allowable_bending_rack > 0 ? o.allowable_bending_rack : o.allowable_bending_pinion;
+          const double sp = o.allowable_bending_pinion / s.pinion_root_stress;
+          const double sr = rack_allow / s.rack_root_stress;
+          oc = value(std::min(sp, sr), sp <= sr ? "pinion governs" : "rack governs");
+        } else if (n == "contact_stress") {
+          oc = value(s.contact_stress);
+        } else if (n == "contact_safety") {
+          const double rack_allow = o.allowable_contact_rack > 0 ? o.allowable_contact_rack : o.allowable_contact_pinion;
+          oc = value(std::min(o.allowable_contact_pinion, rack_allow) / s.contact_stress);
+        }
+      }
+    }
+    MetricValue mv;
+    mv.request = requests[i];
+    mv.label = to_string(requests[i]);
+    if (oc.ok && !std::isfinite(oc.value)) {
+      oc = {false, 0, "non_finite", "metric " + mv.label + " evaluated to a non-finite number"};
+    }
+    mv.ok = oc.ok;
+    mv.value = oc.ok ? oc.value : 0.0;
+    if (oc.ok) mv.display = display(def, oc.value);
+    mv.error_code = oc.code;
+    mv.message = oc.message;
+    out.values.push_back(std::move(mv));
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace rackopt::metrics

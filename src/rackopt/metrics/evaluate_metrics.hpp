@@ -1,0 +1,90 @@
+// Values of named metrics for one design (a Drive), computing only the models
+// the requested metrics need, each at most once.
+//
+// Example:
+//   ProblemTree tree = load_problem_tree_file("problems/rack_railway.yaml");
+//   std::vector<std::pair<std::string, double>> x{{"pinion.module", 0.03}};
+//   Drive drive = drive_with_values(tree, x);
+//   std::vector<MetricRequest> want{parse_metric_request("min_stiffness_ks(200)"),
+//                                   parse_metric_request("contact_ratio")};
+//   MetricValues v = evaluate_metrics(drive, want, {});
+//   if (v.all_ok()) use(v.values[0].value, v.values[1].value);
+//   else report(v.first_failure()->error_code, v.first_failure()->message);
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/metrics/tooth_stress.hpp"
+
+namespace rackopt::metrics {
+
+// Inputs that are not (yet) problem keys. docs/metrics.md proposes the
+// problem keys for the allowables and the load factors.
+struct MetricOptions {
+  LoadFactors load_factors;               // K_A, K_V, K_Fbeta, K_Falpha, K_Hbeta, K_Halpha
+  double allowable_bending_pinion = 0;    // sigma_FP pinion [Pa]; 0 = not given
+  double allowable_bending_rack = 0;      // sigma_FP rack [Pa]; 0 = same as the pinion
+  double allowable_contact_pinion = 0;    // sigma_HP pinion [Pa]; 0 = not given
+  double allowable_contact_rack = 0;      // sigma_HP rack [Pa]; 0 = same as the pinion
+  double rack_root_radius = 0;            // rack root round [m]; 0 = pinion cutter tip radius
+
+  // wear_life_at_R (docs/metrics.md)
+  bool exact_quantile = true;      // one random input: life at R from its quantile (no sampling error)
+  long reliability_samples = -1;   // Monte Carlo path: > 0 overrides reliability.samples
+  long reliability_seed = -1;      // >= 0 overrides reliability.seed (common random numbers either way)
+  int bootstrap_replicates = 200;  // Monte Carlo path: KS test and fit choice (>= 20)
+  unsigned threads = 1;            // Monte Carlo path threads; results do not depend on it
+};
+
+// One requested metric's outcome.
+struct MetricValue {
+  MetricRequest request;     // as asked
+  std::string label;         // to_string(request), e.g. "wear_life_at_R(0.9)"
+  bool ok = false;
+  double value = 0;          // SI (the definition's unit); finite when ok, 0 when failed
+  std::string display;       // value in the definition's display unit, e.g. "61.2 yr", "812 MPa"
+  std::string error_code;    // when failed: the DesignError code, or "non_finite"
+  std::string message;       // when failed: why; when ok: a remark or ""
+};
+
+struct MetricValues {
+  std::vector<MetricValue> values;  // one per request, in request order
+  ModelSet models_run;              // models actually computed (attempted) in this call
+  // Model computations made: geometry, stiffness curve, stress count one each;
+  // the wear computation counts one whether it serves wear_life, the life at
+  // R or both (run_wear_reliability also yields the nominal life). So it never
+  // exceeds the number of models in models_run: each model is computed once.
+  int model_runs = 0;
+  std::vector<std::string> warnings;  // from the models (undercut, clamped rack root round, ...)
+  double seconds = 0;               // wall time of the call (the only non-deterministic field)
+
+  bool all_ok() const;
+  const MetricValue* first_failure() const;  // nullptr when all are ok
+  // The value with this label; throws std::out_of_range when absent.
+  const MetricValue& at(std::string_view label) const;
+};
+
+// Throws InputError when a request is invalid (resolve_request) or its
+// requirements are not configured (wear section, duty, allowables), or an
+// option is out of range, naming what is missing. Cheap; evaluate_metrics
+// calls it first, and a study can call it once before its first design.
+void check_metric_requests(const Drive& drive, std::span<const MetricRequest> requests,
+                           const MetricOptions& options);
+
+// Values of `requests` for `drive`. Computes only the models the requests
+// need (MetricDefinition::models), each once. A DesignError of a model makes
+// every metric that needs that model fail with its code and message; the
+// other metrics are still computed. A non-finite value fails with code
+// "non_finite". Never returns NaN. Throws only what check_metric_requests
+// throws (and InputError a model raises for input it cannot use).
+// A pure function of its arguments: thread-safe, deterministic (the Monte
+// Carlo of wear_life_at_R uses a fixed seed, so neighbouring designs see the
+// same random numbers).
+MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest> requests,
+                              const MetricOptions& options = {});
+
+}  // namespace rackopt::metrics
