@@ -336,19 +336,18 @@ EvaluationStore EvaluationStore::open(const std::string& path, const std::string
 
 void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
                                            const std::vector<std::string>& variable_names, bool resume) {
-  Impl* impl = this;
-  impl->exec(kCreateSchema, "creating the tables");
-  const auto schema = impl->read_meta(kSchemaKey);
+  exec(kCreateSchema, "creating the tables");
+  const auto schema = read_meta(kSchemaKey);
   if (schema && *schema != kSchemaVersion) {
     throw std::runtime_error("'" + path + "' was written by another rackopt version (" + *schema +
                              ", this one reads " + kSchemaVersion +
                              "); delete it or choose another --out folder.");
   }
-  impl->count = static_cast<std::size_t>(impl->scalar("SELECT count(*) FROM evaluations"));
-  if (impl->count > 0) {
-    const auto stored = impl->read_meta(kFingerprintKey).value_or("");
+  count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations"));
+  if (count > 0) {
+    const auto stored = read_meta(kFingerprintKey).value_or("");
     if (stored != study_fingerprint) {
-      throw std::runtime_error("'" + path + "' holds " + std::to_string(impl->count) +
+      throw std::runtime_error("'" + path + "' holds " + std::to_string(count) +
                                " evaluations of another study (fingerprint " + stored + ", this study " +
                                study_fingerprint +
                                "): the study or problem definition changed since they were recorded. "
@@ -356,54 +355,54 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
                                "' to start this study afresh.");
     }
     if (!resume) {
-      throw std::runtime_error("'" + path + "' already holds " + std::to_string(impl->count) +
+      throw std::runtime_error("'" + path + "' already holds " + std::to_string(count) +
                                " evaluations of this study. Pass --resume to continue it (recorded "
                                "evaluations are reused, not recomputed), or choose another --out folder.");
     }
-    Stmt s = impl->prepare("SELECT name FROM variables ORDER BY position");
+    Stmt s = prepare("SELECT name FROM variables ORDER BY position");
     int step;
     while ((step = sqlite3_step(s.get())) == SQLITE_ROW) {
-      impl->variables.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0)));
+      variables.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0)));
     }
-    if (step != SQLITE_DONE) impl->fail("reading variable names", step);
-    if (impl->variables != variable_names) {
+    if (step != SQLITE_DONE) fail("reading variable names", step);
+    if (variables != variable_names) {
       throw std::runtime_error("'" + path + "' records other design variables than this study (same "
                                "fingerprint but different names or order); choose another --out folder.");
     }
-    impl->failed = static_cast<std::size_t>(impl->scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));
+    failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));
   } else {
     // Nothing recorded: the file is (re)claimed by this study.
-    impl->exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
-    impl->write_meta(kSchemaKey, kSchemaVersion);
-    impl->write_meta(kFingerprintKey, study_fingerprint);
-    Stmt s = impl->prepare("INSERT INTO variables(position, name) VALUES(?1, ?2)");
+    exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
+    write_meta(kSchemaKey, kSchemaVersion);
+    write_meta(kFingerprintKey, study_fingerprint);
+    Stmt s = prepare("INSERT INTO variables(position, name) VALUES(?1, ?2)");
     for (std::size_t i = 0; i < variable_names.size(); ++i) {
       sqlite3_bind_int64(s.get(), 1, static_cast<std::int64_t>(i));
-      impl->bind_text(s.get(), 2, variable_names[i]);
-      impl->run(s.get(), "recording variable names");
+      bind_text(s.get(), 2, variable_names[i]);
+      run(s.get(), "recording variable names");
     }
-    impl->variables = variable_names;
+    variables = variable_names;
   }
   {
-    Stmt s = impl->prepare("SELECT metric_id, name FROM metric_names ORDER BY metric_id");
+    Stmt s = prepare("SELECT metric_id, name FROM metric_names ORDER BY metric_id");
     int step;
     while ((step = sqlite3_step(s.get())) == SQLITE_ROW) {
       const std::string name(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 1)));
-      if (sqlite3_column_int64(s.get(), 0) != static_cast<std::int64_t>(impl->metric_by_id.size()) + 1) {
-        impl->fail("reading metric names (ids not contiguous)", SQLITE_CORRUPT);
+      if (sqlite3_column_int64(s.get(), 0) != static_cast<std::int64_t>(metric_by_id.size()) + 1) {
+        fail("reading metric names (ids not contiguous)", SQLITE_CORRUPT);
       }
-      impl->metric_by_id.push_back(name);
-      impl->metric_ids.emplace(name, static_cast<std::int64_t>(impl->metric_by_id.size()));
+      metric_by_id.push_back(name);
+      metric_ids.emplace(name, static_cast<std::int64_t>(metric_by_id.size()));
     }
-    if (step != SQLITE_DONE) impl->fail("reading metric names", step);
+    if (step != SQLITE_DONE) fail("reading metric names", step);
   }
-  impl->begin = impl->prepare("BEGIN");
-  impl->commit = impl->prepare("COMMIT");
-  impl->insert_eval = impl->prepare(
+  begin = prepare("BEGIN");
+  commit = prepare("COMMIT");
+  insert_eval = prepare(
       "INSERT INTO evaluations(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
       "metric_values, ok, message, gradient_probe, seconds) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12)");
-  impl->insert_metric_name = impl->prepare("INSERT INTO metric_names(metric_id, name) VALUES(?1, ?2)");
-  impl->find_by_x = impl->prepare(
+  insert_metric_name = prepare("INSERT INTO metric_names(metric_id, name) VALUES(?1, ?2)");
+  find_by_x = prepare(
       (std::string(kSelectColumns) + "WHERE x_hash = ?1 AND x = ?2 ORDER BY id LIMIT 1").c_str());
 }
 
