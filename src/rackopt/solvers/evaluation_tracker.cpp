@@ -9,10 +9,6 @@ namespace rackopt::solvers::detail {
 
 namespace {
 
-// Enough to cover "objective, then constraints, then a revisit" patterns of
-// NLopt and Ipopt without a search cost worth mentioning.
-constexpr std::size_t kCacheSize = 8;
-
 bool same_point(const std::vector<double>& a, const std::vector<double>& b) {
   // Bitwise equality: solvers pass back the very same doubles.
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
@@ -106,8 +102,7 @@ Evaluation EvaluationTracker::at(const double* x_in, bool gradient_probe) {
   // Models never see a point outside the box (NEWUOA and PRAXIS may step out,
   // Ipopt relaxes bounds by 1e-8 relative).
   for (std::size_t i = 0; i < n_; ++i) x[i] = std::clamp(x[i], lower_[i], upper_[i]);
-  for (const CacheEntry& c : cache_)
-    if (same_point(c.x, x)) return c.evaluation;
+  if (auto hit = memo_.find(x); hit != memo_.end()) return hit->second;
 
   if (halt_ != Halt::kNone) throw RunHalted{halt_ == Halt::kError ? Halt::kStop : halt_};
   poll();
@@ -125,12 +120,7 @@ Evaluation EvaluationTracker::at(const double* x_in, bool gradient_probe) {
     start_point_message_ = e.message;
   }
 
-  if (cache_.size() < kCacheSize) {
-    cache_.push_back({x, e});
-  } else {
-    cache_[cache_next_] = {x, e};
-    cache_next_ = (cache_next_ + 1) % kCacheSize;
-  }
+  if (memo_.size() < kMemoLimit) memo_.emplace(x, e);
 
   if (callbacks_.observer) {
     EvaluationRecord rec;

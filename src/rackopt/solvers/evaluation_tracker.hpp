@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <exception>
 #include <limits>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -62,7 +63,9 @@ class EvaluationTracker {
   const std::string& start_point_message() const { return start_point_message_; }
 
   // The evaluation at x (clamped into the box first). Makes at most one call
-  // of Problem::evaluate per distinct x among the last few points asked for.
+  // of Problem::evaluate per distinct x in the whole run (memo of up to
+  // kMemoLimit points; solvers do revisit old points, e.g. COBYLA and Ipopt
+  // at the end of a run).
   // Throws RunHalted when the budget, the time or a stop request ends the
   // run; lets anything evaluate() or the observer threw pass unchanged.
   Evaluation at(const double* x, bool gradient_probe = false);
@@ -108,10 +111,7 @@ class EvaluationTracker {
   bool any_feasible() const { return has_feasible_; }
 
  private:
-  struct CacheEntry {
-    std::vector<double> x;
-    Evaluation evaluation;
-  };
+  static constexpr std::size_t kMemoLimit = 200000;
   Evaluation sanitized(Evaluation e) const;
   void record(const std::vector<double>& x, const Evaluation& e);
   bool stacked(const Evaluation& e, std::vector<double>& out) const;
@@ -123,8 +123,7 @@ class EvaluationTracker {
   std::vector<double> lower_, upper_, x0_;
   std::chrono::steady_clock::time_point started_;
 
-  std::vector<CacheEntry> cache_;  // small ring of recent points
-  std::size_t cache_next_ = 0;
+  std::map<std::vector<double>, Evaluation> memo_;  // every point evaluated (exact doubles)
   std::vector<double> jacobian_x_;
   Jacobian jacobian_;
   bool jacobian_valid_ = false;
