@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "rackopt/solvers/adapters.hpp"
 
