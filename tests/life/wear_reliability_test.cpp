@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "rackopt/problem/problem_loader.hpp"
@@ -33,27 +35,44 @@ TEST(WearReliability, SameResultOnAnyThreadCount) {
   }
 }
 
-// One monotone input: the exact life at R must lie inside the empirical
-// order-statistic confidence interval of the Monte Carlo sample.
-TEST(WearReliability, ExactQuantileInsideMonteCarloInterval) {
+// One monotone input: R(t) from the exact quantile map (which counts the
+// samples drawn outside [max(1, [eps]), eps_max] as failed at t = 0) must
+// agree with the Monte Carlo survival fraction within 3 binomial standard
+// deviations. The 40-year point checks the bounds: without them the exact
+// R(40 y) would be 1 while about 1 % of the samples start above eps_max.
+TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
   const Drive d = ship_lift();
   ASSERT_EQ(d.reliability.inputs.size(), 1u);
   WearReliabilityOptions o;
-  o.samples = 400;
+  o.samples = 2000;
   o.bootstrap_replicates = 20;
   const WearReliabilityResult r = run_wear_reliability(d, o);
   ASSERT_TRUE(r.exact.available);
-  EXPECT_TRUE(r.exact.life_increases);  // more contact ratio margin, longer life
-  ASSERT_EQ(r.summary.life.size(), d.reliability.reliabilities.size());
-  for (std::size_t i = 0; i < r.summary.life.size(); ++i) {
-    const reliability::LifeInterval& e = r.summary.life[i].empirical;
-    const double exact_s = r.exact.life_at_R_years[i] * kSecondsPerYear;
-    if (e.lower_bounded) {
-      EXPECT_GE(exact_s, e.lower * (1 - 1e-9)) << "R = " << r.summary.life[i].reliability;
+  EXPECT_TRUE(r.exact.life_increases);  // more contact ratio, lower tooth loads, longer life
+  EXPECT_GT(r.exact.failed_at_start, 0.0);
+  EXPECT_GT(r.summary.immediate_failures, 0u);
+  ASSERT_EQ(r.summary.reliability.size(), r.exact.R_at_times.size());
+  const double n = static_cast<double>(o.samples);
+  for (std::size_t i = 0; i < r.exact.R_at_times.size(); ++i) {
+    const double R = r.exact.R_at_times[i];
+    const double tol = 3.0 * std::sqrt(std::max(R * (1 - R), 1.0 / n) / n) + 1.0 / n;
+    EXPECT_NEAR(r.summary.reliability[i].empirical, R, tol) << "t = " << r.summary.reliability[i].t / kSecondsPerYear << " yr";
+  }
+  // Life at R inverts R(t): R(t_R) = R.
+  ASSERT_EQ(r.exact.life_at_R_years.size(), d.reliability.reliabilities.size());
+  for (std::size_t i = 0; i < r.exact.life_at_R_years.size(); ++i) {
+    const double tR = r.exact.life_at_R_years[i];
+    const double R = d.reliability.reliabilities[i];
+    if (R > 1.0 - r.exact.failed_at_start) {
+      EXPECT_EQ(tR, 0.0) << "R = " << R << " is above the probability of starting inside the bounds";
+      continue;
     }
-    if (e.upper_bounded) {
-      EXPECT_LE(exact_s, e.upper * (1 + 1e-9)) << "R = " << r.summary.life[i].reliability;
+    std::size_t survive = 0, counted = 0;
+    for (const auto& s : r.lives) {
+      ++counted;
+      if (s.value > tR * kSecondsPerYear) ++survive;
     }
+    EXPECT_NEAR(static_cast<double>(survive) / counted, R, 3.0 * std::sqrt(R * (1 - R) / n) + 1.0 / n) << "R = " << R;
   }
 }
 

@@ -40,6 +40,11 @@ inline Drive ship_lift_wear() {
   d.wear.rack_hardness = seed004_polynomial();
   d.wear.min_contact_ratio = 1.0;
   d.duty.rack_meshes_per_year = 4000;
+  d.duty.pinion_meshes_per_year = 4000;
+  // The model's defaults, not the shipped calibration's (which freezes the
+  // profile and uses 240 points: problems/ship_lift.yaml).
+  d.wear.update_profile = true;
+  d.wear.profile_points = 60;
   return d;
 }
 

@@ -110,30 +110,48 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     auto life_at_q = [&](double q) {
       return model.life(wear_sample_for(drive, inputs, {d0.quantile(q)})).life_years;
     };
-    const double lo = life_at_q(0.25), hi = life_at_q(0.75);
+    // A sampled contact ratio outside [max(1, [eps]), eps_max] fails at once
+    // (life 0): the life is monotone only on the probabilities [qa, qb]
+    // between those bounds, and R(t) and the life at R count the rest as
+    // failed at t = 0 (seed 004's R = P([eps] <= eps <= eps_max)).
+    double qa = 0.0, qb = 1.0;
+    if (inputs[0].key == "contact_ratio") {
+      qa = d0.cdf(std::max(1.0, drive.wear.min_contact_ratio));
+      qb = d0.cdf(model.max_contact_ratio());
+    }
     ExactReliability& ex = out.exact;
     ex.available = true;
     ex.input = inputs[0].key;
-    ex.life_increases = hi >= lo;
-    // life at R: P(life > t_R) = R.
-    for (double R : spec.reliabilities) {
-      ex.life_at_R_years.push_back(life_at_q(ex.life_increases ? 1.0 - R : R));
-    }
-    // R(t): the probability q* where the life crosses t, by bisection on q.
-    for (double t : spec.times) {
-      const double t_years = t / kSecondsPerYear;
-      double a = 1e-12, b = 1.0 - 1e-12;
-      for (int it = 0; it < 60; ++it) {
-        const double m = 0.5 * (a + b);
-        const bool below = life_at_q(m) <= t_years;  // life(q) <= t
-        if (ex.life_increases == below) {
-          a = m;
-        } else {
-          b = m;
-        }
+    ex.failed_at_start = qa + (1.0 - qb);
+    if (qb - qa > 1e-12) {
+      const double lo = life_at_q(qa + 0.25 * (qb - qa)), hi = life_at_q(qa + 0.75 * (qb - qa));
+      ex.life_increases = hi >= lo;
+      // life at R: P(life > t_R) = R. An R above the probability of starting
+      // inside the bounds cannot be reached: life 0.
+      for (double R : spec.reliabilities) {
+        const double q = ex.life_increases ? qb - R : qa + R;
+        ex.life_at_R_years.push_back(q < qa || q > qb ? 0.0 : life_at_q(std::clamp(q, qa + 1e-12, qb - 1e-12)));
       }
-      const double q = 0.5 * (a + b);
-      ex.R_at_times.push_back(ex.life_increases ? 1.0 - q : q);
+      // R(t): the probability q* in [qa, qb] where the life crosses t, by
+      // bisection on q.
+      for (double t : spec.times) {
+        const double t_years = t / kSecondsPerYear;
+        double a = qa + 1e-12, b = qb - 1e-12;
+        for (int it = 0; it < 60; ++it) {
+          const double m = 0.5 * (a + b);
+          const bool below = life_at_q(m) <= t_years;  // life(q) <= t
+          if (ex.life_increases == below) {
+            a = m;
+          } else {
+            b = m;
+          }
+        }
+        const double q = 0.5 * (a + b);
+        ex.R_at_times.push_back(std::clamp(ex.life_increases ? qb - q : q - qa, 0.0, 1.0));
+      }
+    } else {
+      ex.life_at_R_years.assign(spec.reliabilities.size(), 0.0);
+      ex.R_at_times.assign(spec.times.size(), 0.0);
     }
   }
   out.fit_ms = ms_since(t0);

@@ -40,6 +40,7 @@ struct ExactReliability {
   bool available = false;
   std::string input;                    // the random input's key
   bool life_increases = true;           // with the input
+  double failed_at_start = 0;           // probability of a sample outside [max(1, [eps]), eps_max] (life 0)
   std::vector<double> life_at_R_years;  // for reliability.reliabilities
   std::vector<double> R_at_times;       // for reliability.times
 };

@@ -91,10 +91,16 @@ std::string reliability_csv(const Drive& drive, const WearReliabilityResult& r) 
   for (const auto& s : r.lives) {
     if (s.ok()) lives_s.push_back(s.value);
   }
+  // The fit describes the positive lives; samples that failed at once
+  // (life 0) scale it, as in the summary: R(t) = (1 - p0) S(t).
+  const double p0 = r.summary.samples_total > r.summary.failed_evaluations
+                        ? static_cast<double>(r.summary.immediate_failures) /
+                              static_cast<double>(r.summary.samples_total - r.summary.failed_evaluations)
+                        : 0.0;
   std::string out = "t_years,R_fit,R_empirical\n";
   for (double t : grid) {
     const double ts = t * kSecondsPerYear;
-    out += g(t) + "," + (d ? g(reliability::reliability_at(*d, ts)) : std::string("")) + "," +
+    out += g(t) + "," + (d ? g((1.0 - p0) * reliability::reliability_at(*d, ts)) : std::string("")) + "," +
            (lives_s.empty() ? std::string("") : g(reliability::empirical_reliability(lives_s, ts))) + "\n";
   }
   return out;
