@@ -300,6 +300,8 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   if (r.exact.available) {
     j.key("exact").begin_object();
     j.key("input").value(r.exact.input);
+    // Probability of a sample outside [max(1, [eps]), eps_max]: fails at t = 0.
+    j.key("failed_at_start").value(r.exact.failed_at_start);
     j.key("life_at_R").begin_object();
     for (std::size_t i = 0; i < r.exact.life_at_R_years.size(); ++i) {
       j.key(g(d.reliability.reliabilities[i], "%g")).value(r.exact.life_at_R_years[i]);
