@@ -53,6 +53,11 @@ struct ReliabilityRun {
   std::vector<std::string> remark;    // per R
 };
 
+// Models built on the same geometry repeat its warnings: keep each once.
+void add_warning(MetricValues& out, const std::string& w) {
+  if (std::find(out.warnings.begin(), out.warnings.end(), w) == out.warnings.end()) out.warnings.push_back(w);
+}
+
 }  // namespace
 
 bool MetricValues::all_ok() const { return first_failure() == nullptr; }
@@ -133,7 +138,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     ++out.model_runs;
     try {
       geometry = build_mesh_geometry(drive);
-      for (const std::string& w : geometry->warnings) out.warnings.push_back(w);
+      for (const std::string& w : geometry->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
       geometry_failure = Failure{e.code(), e.what()};
     }
@@ -148,7 +153,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     try {
       const MeshStiffnessModel model(drive);
       curve = model.curve();
-      for (const std::string& w : curve->warnings) out.warnings.push_back(w);
+      for (const std::string& w : curve->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
       curve_failure = Failure{e.code(), e.what()};
     }
@@ -220,14 +225,14 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     ++out.model_runs;
     try {
       const WearModel model(drive);
-      for (const std::string& w : model.warnings()) out.warnings.push_back(w);
+      for (const std::string& w : model.warnings()) add_warning(out, w);
       nominal = model.life();
     } catch (const DesignError& e) {
       wear_failure = Failure{e.code(), e.what()};
     }
   }
   if (nominal) {
-    for (const std::string& w : nominal->warnings) out.warnings.push_back(w);
+    for (const std::string& w : nominal->warnings) add_warning(out, w);
   }
 
   // --- stresses ------------------------------------------------------------
@@ -242,7 +247,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       try {
         stress = tooth_stress(drive, *geometry, o.load_factors, o.rack_root_radius);
         if (stress->rack_root_radius_clamped) {
-          out.warnings.push_back("rack root round clamped to the largest that fits the rack space: " +
+          add_warning(out, "rack root round clamped to the largest that fits the rack space: " +
                                  format_quantity(stress->rack_root_radius, QuantityKind::kLength, "mm", 4));
         }
       } catch (const DesignError& e) {
@@ -267,22 +272,33 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
         else if (n == "max_stiffness") oc = value(c.k_max);
         else if (n == "mean_stiffness") oc = value(c.k_mean);
         else {
-          // Samples plus the refined extremes, so that the KS bounds hold
-          // against k_min/k_max themselves, not only against the samples.
-          std::vector<double> k;
-          k.reserve(c.samples.size() + 2);
-          for (const MeshState& s : c.samples) k.push_back(s.stiffness);
-          k.push_back(c.k_min);
-          k.push_back(c.k_max);
-          const double rho = *r.parameter;
-          if (!(c.k_mean > 0)) {
-            oc = fail({"non_finite", "mean stiffness is not positive: KS scale undefined"});
-          } else if (n == "min_stiffness_ks") {
-            oc = value(ks_min(k, rho, c.k_mean));
-          } else if (n == "max_stiffness_ks") {
-            oc = value(ks_max(k, rho, c.k_mean));
+          // KS on ln k over the samples plus the refined extremes (so the
+          // bounds hold against k_min/k_max themselves, not only against the
+          // samples). On the logarithm the aggregate is scale-free: its
+          // relative gap is at most ln(N)/rho whatever the stiffness level,
+          // and exp(KS(ln k)) = (sum k_i^-rho)^(-1/rho) is a power mean.
+          std::vector<double> lnk;
+          lnk.reserve(c.samples.size() + 2);
+          bool positive = c.k_min > 0;
+          for (const MeshState& s : c.samples) {
+            positive = positive && s.stiffness > 0;
+            if (positive) lnk.push_back(std::log(s.stiffness));
+          }
+          if (!positive) {
+            oc = fail({"non_finite", "mesh stiffness not positive somewhere: the KS aggregate of ln k is undefined"});
           } else {
-            oc = value((ks_max(k, rho, c.k_mean) - ks_min(k, rho, c.k_mean)) / c.k_mean);
+            lnk.push_back(std::log(c.k_min));
+            lnk.push_back(std::log(c.k_max));
+            const double rho = *r.parameter;
+            const double lo = std::exp(ks_min(lnk, rho, 1.0));
+            const double hi = std::exp(ks_max(lnk, rho, 1.0));
+            if (n == "min_stiffness_ks") {
+              oc = value(lo);
+            } else if (n == "max_stiffness_ks") {
+              oc = value(hi);
+            } else {
+              oc = value((hi - lo) / c.k_mean);
+            }
           }
         }
       }

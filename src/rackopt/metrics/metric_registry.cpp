@@ -23,9 +23,9 @@ constexpr std::string_view kStiffnessEffects =
 constexpr std::string_view kWearEffects =
     "pinion_tooth, fillet_foundation, hertz, interference_limit";
 
-// KS aggregation weight: dimensionless, the values are divided by k_mean.
-constexpr ParameterSpec kRho{ParameterSpec::Use::kOptional, "rho", 200.0, 0.0, 1e7,
-                             "KS aggregation weight on k/k_mean (larger: closer to the true extreme)"};
+// KS aggregation weight on ln k: relative gap to the true extreme <= ln(N)/rho.
+constexpr ParameterSpec kRho{ParameterSpec::Use::kOptional, "rho", 500.0, 0.0, 1e7,
+                             "KS weight on ln k; relative gap to the true extreme at most ln(N)/rho"};
 
 std::vector<MetricDefinition> build_registry() {
   const ModelSet curve{Model::kStiffnessCurve};
@@ -47,12 +47,13 @@ std::vector<MetricDefinition> build_registry() {
                "Kreisselmeier-Steinhauser smooth minimum of the stiffness samples: a lower bound of "
                "min_stiffness",
                curve, 0, kStiffnessEffects, true, kRho,
-               "KS = -(k_mean/rho) ln sum exp(-rho k_i/k_mean) (Kreisselmeier & Steinhauser 1979)"});
+               "exp(KS(ln k)) = (sum k_i^-rho)^(-1/rho) over the curve samples and the refined extremes "
+               "(Kreisselmeier & Steinhauser 1979)"});
   r.push_back({"max_stiffness_ks", "N/m", QuantityKind::kStiffness, "MN/m",
                "Kreisselmeier-Steinhauser smooth maximum of the stiffness samples: an upper bound of "
                "max_stiffness",
                curve, 0, kStiffnessEffects, true, kRho,
-               "KS = (k_mean/rho) ln sum exp(rho k_i/k_mean)"});
+               "exp(KS(ln k)) = (sum k_i^rho)^(1/rho)"});
   r.push_back({"stiffness_fluctuation_ks", "-", QuantityKind::kDimensionless, "",
                "(max_stiffness_ks - min_stiffness_ks)/k_mean: a smooth upper bound of "
                "stiffness_fluctuation",
