@@ -1,10 +1,15 @@
-// Error versus time for each fidelity knob of the stiffness curve; prints the
-// Markdown tables of docs/accuracy.md.
+// Error versus time for each fidelity knob of the stiffness curve and of the
+// wear life / life at reliability R; prints the Markdown tables of docs/accuracy.md.
 //
-//   ./build/accuracy_table [problem.yaml ...]     (default: the bundled rack_railway
-//                                                   and ship_lift problems)
+//   ./build/accuracy_table                         stiffness (both bundled problems), then wear
+//   ./build/accuracy_table stiffness [problem.yaml ...]
+//                                                  stiffness only (default: the bundled
+//                                                  rack_railway and ship_lift problems)
+//   ./build/accuracy_table problem.yaml ...        the same (stiffness only)
+//   ./build/accuracy_table wear [problem.yaml]     wear only (default: problems/ship_lift.yaml;
+//                                                  the cases are chosen for that drive, ~1-2 min)
 //
-// Knobs:
+// Stiffness knobs:
 //  * numerics.quadrature_order: fixed Gauss-Legendre points per tooth integral,
 //    against GSL adaptive quadrature (QAGS, rel. 1e-12) as the reference;
 //  * numerics.positions_per_period: uniform samples per mesh period, against
@@ -12,17 +17,27 @@
 //    "curve" column is the largest error of the piecewise-linear curve drawn
 //    through the samples (what a plot or a downstream interpolation sees),
 //    measured at 4 points between every pair of reference samples.
+//
+// Wear knobs (docs/models/wear.md):
+//  * wear.profile_points: points along each flank, against 1920 points;
+//  * wear.block_fraction: the adaptive block (update_profile on), against 0.001;
+//  * samples and reliability.sampling (pseudo / Sobol) of the life at R, against
+//    the exact quantile map of the single random input (result.exact).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gsl/gsl_errno.h>
 
+#include "rackopt/core/error.hpp"
+#include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/wear/wear_life.hpp"
 
 namespace {
 
@@ -116,23 +131,273 @@ void positions_table(const Drive& base) {
   std::printf("| 3200 (reference) | %zu | – | – | – | – | %.3f |\n\n", ref.samples.size(), t_ref);
 }
 
+// ---------------------------------------------------------------------------
+// Wear life and life at R.
+
+using rackopt::WearLifeResult;
+using rackopt::WearModel;
+using rackopt::WearSample;
+
+struct TimedLife {
+  WearLifeResult r;
+  double ms = 0;  // median wall time of one life() call (model built once)
+};
+
+// Median time of WearModel::life(sample): at least 3 calls, at most 21 or ~1 s.
+TimedLife time_life(const WearModel& model, const WearSample& sample) {
+  TimedLife out;
+  std::vector<double> t;
+  const auto t_start = std::chrono::steady_clock::now();
+  for (int rep = 0; rep < 21; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    WearLifeResult r = model.life(sample);
+    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    if (rep == 0) out.r = std::move(r);
+    if (rep >= 2 && std::chrono::steady_clock::now() - t_start > std::chrono::seconds(1)) break;
+  }
+  std::sort(t.begin(), t.end());
+  out.ms = t[t.size() / 2];
+  return out;
+}
+
+double signed_rel(double a, double ref) { return (a - ref) / std::abs(ref); }
+
+// One deterministic case of the wear tables.
+struct WearCase {
+  const char* label;
+  double contact_ratio;      // WearSample::contact_ratio (0 = nominal)
+  bool update_profile;
+  double min_contact_ratio;  // < 0: the problem's
+};
+
+rackopt::Drive wear_drive(const Drive& base, const WearCase& c, int points, double block_fraction) {
+  Drive d = base;
+  d.wear.update_profile = c.update_profile;
+  if (c.min_contact_ratio >= 0) d.wear.min_contact_ratio = c.min_contact_ratio;
+  if (points > 0) d.wear.profile_points = points;
+  if (block_fraction > 0) d.wear.block_fraction = block_fraction;
+  return d;
+}
+
+TimedLife wear_case(const Drive& base, const WearCase& c, int points, double block_fraction) {
+  const WearModel model(wear_drive(base, c, points, block_fraction));
+  return time_life(model, WearSample{.contact_ratio = c.contact_ratio});
+}
+
+constexpr int kReferencePoints = 1920;
+constexpr double kReferenceBlock = 0.001;
+
+void profile_points_table(const Drive& base, const std::vector<WearCase>& cases) {
+  std::vector<TimedLife> ref;
+  for (const WearCase& c : cases) ref.push_back(wear_case(base, c, kReferencePoints, -1));
+  std::printf("| profile points |");
+  for (const WearCase& c : cases) std::printf(" %s: life error | ms |", c.label);
+  std::printf("\n|---|");
+  for (std::size_t k = 0; k < cases.size(); ++k) std::printf("---|---|");
+  std::printf("\n");
+  for (int n : {30, 60, 120, 240, 480, 960}) {
+    std::printf("| %d |", n);
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const TimedLife t = wear_case(base, cases[k], n, -1);
+      std::printf(" %+.1e | %.3f |", signed_rel(t.r.life_years, ref[k].r.life_years), t.ms);
+    }
+    std::printf("\n");
+  }
+  std::printf("| %d (reference) |", kReferencePoints);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::printf(" %.3f y (%s) | %.3f |", ref[k].r.life_years, ref[k].r.criterion.c_str(), ref[k].ms);
+  }
+  std::printf("\n\n");
+}
+
+// The contact-ratio criterion: life, final loaded contact ratio and criterion per N.
+void contact_ratio_criterion_table(const Drive& base, const WearCase& c) {
+  const TimedLife ref = wear_case(base, c, kReferencePoints, -1);
+  std::printf("| profile points | life [y] | life error | final loaded contact ratio | criterion | ms |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  for (int n : {30, 60, 120, 240, 480, 960}) {
+    const TimedLife t = wear_case(base, c, n, -1);
+    std::printf("| %d | %.3f | %+.1e | %.4f | %s | %.3f |\n", n, t.r.life_years,
+                signed_rel(t.r.life_years, ref.r.life_years), t.r.final_contact_ratio, t.r.criterion.c_str(), t.ms);
+  }
+  std::printf("| %d (reference) | %.3f | – | %.4f | %s | %.3f |\n\n", kReferencePoints, ref.r.life_years,
+              ref.r.final_contact_ratio, ref.r.criterion.c_str(), ref.ms);
+}
+
+void block_fraction_table(const Drive& base, const std::vector<WearCase>& cases) {
+  std::vector<TimedLife> ref;
+  for (const WearCase& c : cases) ref.push_back(wear_case(base, c, -1, kReferenceBlock));
+  std::printf("| block fraction |");
+  for (const WearCase& c : cases) std::printf(" %s: life error | blocks | ms |", c.label);
+  std::printf("\n|---|");
+  for (std::size_t k = 0; k < cases.size(); ++k) std::printf("---|---|---|");
+  std::printf("\n");
+  for (double f : {0.2, 0.1, 0.05, 0.02, 0.01, 0.005}) {
+    std::printf("| %g |", f);
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const TimedLife t = wear_case(base, cases[k], -1, f);
+      std::printf(" %+.1e | %d | %.3f |", signed_rel(t.r.life_years, ref[k].r.life_years), t.r.blocks, t.ms);
+    }
+    std::printf("\n");
+  }
+  std::printf("| %g (reference) |", kReferenceBlock);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    std::printf(" %.4f y | %d | %.3f |", ref[k].r.life_years, ref[k].r.blocks, ref[k].ms);
+  }
+  std::printf("\n\n");
+}
+
+// Life at R against samples and sampling. Each (sampling, N) row is run for
+// several seeds on one thread; errors and half-widths are relative to the
+// exact life at R of the single random input.
+struct IntervalStats {
+  double half_width = 0;  // mean over seeds of (upper - lower) / 2 / exact
+  double mean_abs_error = 0, max_abs_error = 0;  // of the estimate
+  int covers = 0;         // seeds whose interval contains the exact value
+  bool one_sided = false; // some seed's interval unbounded on one side
+};
+
+void add_interval(IntervalStats& s, const rackopt::reliability::LifeInterval& li, double exact_s, int n_seeds) {
+  if (!li.lower_bounded || !li.upper_bounded) s.one_sided = true;
+  s.half_width += 0.5 * (li.upper - li.lower) / exact_s / n_seeds;
+  const double e = std::abs(li.estimate - exact_s) / exact_s;
+  s.mean_abs_error += e / n_seeds;
+  s.max_abs_error = std::max(s.max_abs_error, e);
+  if (li.lower <= exact_s && exact_s <= li.upper) ++s.covers;
+}
+
+// (samples, seeds) rows: fewer seeds for the largest N keep the section near 2 min.
+void life_at_R_table(const Drive& base, const std::vector<std::pair<long, int>>& rows) {
+  const auto& Rs = base.reliability.reliabilities;
+  std::vector<std::size_t> which;  // the R = 0.9 and 0.99 entries of the problem's list
+  for (std::size_t i = 0; i < Rs.size(); ++i)
+    if (std::abs(Rs[i] - 0.9) < 1e-12 || std::abs(Rs[i] - 0.99) < 1e-12) which.push_back(i);
+  if (which.empty()) {
+    std::printf("(the problem asks for neither R = 0.9 nor R = 0.99: no life-at-R table)\n\n");
+    return;
+  }
+  std::vector<double> exact_years;
+  {
+    const rackopt::WearReliabilityResult r = rackopt::run_wear_reliability(
+        base, {.samples = 16, .seed = 1, .threads = 1, .bootstrap_replicates = 20});
+    if (!r.exact.available) {
+      std::printf("(no exact reference: the problem needs exactly one random input)\n\n");
+      return;
+    }
+    exact_years = r.exact.life_at_R_years;
+    std::printf("Exact life at R (quantile map of `%s`):", r.exact.input.c_str());
+    for (std::size_t i : which) std::printf(" R = %g: %.4f y;", Rs[i], exact_years[i]);
+    std::printf(" probability of failing at once %.4f.\n\n", r.exact.failed_at_start);
+  }
+  std::printf("| R | sampling | samples | seeds | empirical: CI half-width | mean (max) abs error | CI covers exact "
+              "| fit: CI half-width | mean (max) abs error | CI covers exact | ms samples | ms fit + exact |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const bool sobol : {false, true}) {
+    for (const auto& [n, n_seeds] : rows) {
+      std::vector<IntervalStats> emp(which.size()), fit(which.size());
+      double ms_samples = 0, ms_fit = 0;
+      for (int seed = 1; seed <= n_seeds; ++seed) {
+        Drive d = base;
+        d.reliability.sobol = sobol;
+        const rackopt::WearReliabilityResult r =
+            rackopt::run_wear_reliability(d, {.samples = n, .seed = seed, .threads = 1});
+        ms_samples += r.samples_ms / n_seeds;
+        ms_fit += r.fit_ms / n_seeds;
+        for (std::size_t k = 0; k < which.size(); ++k) {
+          const auto& life = r.summary.life[which[k]];
+          const double exact_s = exact_years[which[k]] * rackopt::kSecondsPerYear;
+          add_interval(emp[k], life.empirical, exact_s, n_seeds);
+          if (life.fit) add_interval(fit[k], *life.fit, exact_s, n_seeds);
+        }
+      }
+      for (std::size_t k = 0; k < which.size(); ++k) {
+        auto hw = [](const IntervalStats& s) {
+          char b[48];
+          std::snprintf(b, sizeof b, s.one_sided ? "%.2f %% (one-sided)" : "%.2f %%", 100 * s.half_width);
+          return std::string(b);
+        };
+        std::printf("| %g | %s | %ld | %d | %s | %.2f (%.2f) %% | %d/%d | %s | %.2f (%.2f) %% | %d/%d | %.0f | %.0f |\n",
+                    Rs[which[k]], sobol ? "Sobol" : "pseudo", n, n_seeds, hw(emp[k]).c_str(), 100 * emp[k].mean_abs_error,
+                    100 * emp[k].max_abs_error, emp[k].covers, n_seeds, hw(fit[k]).c_str(),
+                    100 * fit[k].mean_abs_error, 100 * fit[k].max_abs_error, fit[k].covers, n_seeds, ms_samples,
+                    ms_fit);
+      }
+    }
+  }
+  std::printf("\n");
+}
+
+void wear_tables(const std::string& file) {
+  const Drive d = rackopt::load_problem(file);
+  if (!(d.wear.coefficient > 0)) throw rackopt::InputError({file, 0, 0}, "wear", "the wear tables need a wear section");
+  std::printf("### Wear: %s (%s)\n\n", d.name.c_str(), file.substr(file.find_last_of('/') + 1).c_str());
+  std::printf("Problem settings: profile_points %d, block_fraction %g, update_profile %s, min_contact_ratio %g.\n"
+              "Times: median wall time of one `WearModel::life()` (model built once), one core.\n\n",
+              d.wear.profile_points, d.wear.block_fraction, d.wear.update_profile ? "on" : "off",
+              d.wear.min_contact_ratio);
+
+  std::printf("Profile points (block_fraction %g; error signed, relative to %d points):\n\n", d.wear.block_fraction,
+              kReferencePoints);
+  profile_points_table(d, {{"nominal, update off", 0, false, -1},
+                           {"nominal, update on", 0, true, -1},
+                           {"ε 1.44, update off", 1.44, false, -1},
+                           {"ε 1.44, update on", 1.44, true, -1}});
+
+  const WearCase cr_case{"ε 1.52, [ε] 1.49, update on", 1.52, true, 1.49};
+  std::printf("Contact-ratio criterion governing: sampled ε 1.52, wear.min_contact_ratio 1.49, update on:\n\n");
+  contact_ratio_criterion_table(d, cr_case);
+
+  std::printf("Block fraction (update on, profile_points %d; error relative to block_fraction %g):\n\n",
+              d.wear.profile_points, kReferenceBlock);
+  block_fraction_table(d, {{"nominal", 0, true, -1}, {"ε 1.44", 1.44, true, -1}, cr_case});
+
+  if (d.reliability.inputs.size() == 1) {
+    std::printf("Life at R vs samples and sampling (the problem's settings, seeds 1..n per row, 1 thread, "
+                "95 %% intervals, 200 bootstrap replicates; half-widths and errors relative to the exact life at R;\n"
+                "times are per run):\n\n");
+    life_at_R_table(d, {{100, 5}, {300, 5}, {1000, 5}, {3000, 5}, {10000, 3}});
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   gsl_set_error_handler_off();
-  std::vector<std::string> files;
-  for (int i = 1; i < argc; ++i) files.emplace_back(argv[i]);
-  if (files.empty()) {
-    files = {std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml",
-             std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"};
+  // First argument "stiffness" or "wear" selects one part; without it, files
+  // given are stiffness problems, and no arguments at all runs both parts.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  bool run_stiffness = true, run_wear = args.empty();
+  if (!args.empty() && (args[0] == "stiffness" || args[0] == "wear")) {
+    run_stiffness = args[0] == "stiffness";
+    run_wear = !run_stiffness;
+    args.erase(args.begin());
   }
-  for (const std::string& f : files) {
-    const Drive d = rackopt::load_problem(f);
-    std::printf("### %s (%s)\n\n", d.name.c_str(), f.substr(f.find_last_of('/') + 1).c_str());
-    std::printf("Quadrature order (positions per period %d):\n\n", d.numerics.positions_per_period);
-    quadrature_table(d);
-    std::printf("Positions per mesh period (quadrature order %d):\n\n", d.numerics.quadrature_order);
-    positions_table(d);
+  try {
+    if (run_stiffness) {
+      std::vector<std::string> files = args;
+      if (files.empty()) {
+        files = {std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml",
+                 std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"};
+      }
+      for (const std::string& f : files) {
+        const Drive d = rackopt::load_problem(f);
+        std::printf("### %s (%s)\n\n", d.name.c_str(), f.substr(f.find_last_of('/') + 1).c_str());
+        std::printf("Quadrature order (positions per period %d):\n\n", d.numerics.positions_per_period);
+        quadrature_table(d);
+        std::printf("Positions per mesh period (quadrature order %d):\n\n", d.numerics.quadrature_order);
+        positions_table(d);
+      }
+    }
+    if (run_wear) {
+      if (args.size() > 1) {
+        std::fprintf(stderr, "usage: accuracy_table wear [problem.yaml]\n");
+        return 2;
+      }
+      wear_tables(args.empty() ? std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml" : args[0]);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+    return 1;
   }
   return 0;
 }

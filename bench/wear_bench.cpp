@@ -1,0 +1,160 @@
+// Benchmarks of the wear life and of the wear life at reliability R (issue 3
+// "Accuracy and speed": one deterministic life < 1 ms, life at R from 1000
+// samples < 100 ms, one core). docs/performance.md records the figures.
+//   ./build/wear_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+// The 10^4-sample run takes ~10 s per iteration; skip it with
+//   --benchmark_filter=-'.*/10000.*'
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/reliability/reliability.hpp"
+#include "rackopt/wear/wear_life.hpp"
+
+namespace {
+
+// The calibrated seed 004 drive: 240 profile points, update_profile off,
+// contact ratio N(1.44, 0.038), R = 0.9 / 0.95 / 0.99, 5 times.
+rackopt::Drive ship_lift() {
+  return rackopt::load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
+}
+
+// Arguments: profile points (0 = the file's 240), update_profile (0/1, -1 = the file's off).
+rackopt::Drive ship_lift_with(long points, long update) {
+  rackopt::Drive d = ship_lift();
+  if (points > 0) d.wear.profile_points = static_cast<int>(points);
+  if (update >= 0) d.wear.update_profile = update != 0;
+  return d;
+}
+
+// One deterministic life of the nominal drive, model built once (what a
+// Monte Carlo sample pays).
+void BM_WearLife(benchmark::State& state) {
+  const rackopt::WearModel model(ship_lift_with(state.range(0), state.range(1)));
+  rackopt::WearLifeResult r;
+  for (auto _ : state) {
+    r = model.life();
+    benchmark::DoNotOptimize(r.life_cycles);
+  }
+  state.counters["blocks"] = r.blocks;
+  state.counters["life_years"] = r.life_years;
+}
+BENCHMARK(BM_WearLife)
+    ->ArgNames({"points", "update"})
+    ->Args({0, -1})   // the file's settings: 240 points, update off
+    ->Args({60, 1})   // the model's defaults: 60 points, update on, block_fraction 0.02
+    ->Args({60, 0})
+    ->Args({240, 1})
+    ->Unit(benchmark::kMillisecond);
+
+// One life of a sampled contact ratio (the path and band weights are rebuilt
+// per sample, as in the Monte Carlo loop).
+void BM_WearLifeSampledContactRatio(benchmark::State& state) {
+  const rackopt::WearModel model(ship_lift_with(state.range(0), state.range(1)));
+  double eps = 1.40;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(model.life({.contact_ratio = eps}).life_cycles);
+    eps = eps > 1.49 ? 1.40 : eps + 0.0037;
+  }
+}
+BENCHMARK(BM_WearLifeSampledContactRatio)
+    ->ArgNames({"points", "update"})
+    ->Args({0, -1})
+    ->Args({60, 1})
+    ->Unit(benchmark::kMillisecond);
+
+// Model construction alone (geometry, compliance tables, hardness integrals):
+// paid once per design, not per sample.
+void BM_WearModelConstruction(benchmark::State& state) {
+  const rackopt::Drive d = ship_lift();
+  for (auto _ : state) {
+    rackopt::WearModel model(d);
+    benchmark::DoNotOptimize(&model);
+  }
+}
+BENCHMARK(BM_WearModelConstruction)->Unit(benchmark::kMillisecond);
+
+// The whole life-at-R run on one thread: nominal life, N sampled lives, the
+// summary (3 candidate fits, 200-replicate bootstrap KS critical values and fit
+// intervals) and the exact quantile map (~305 more lives: 60 bisection steps
+// for each of the 5 R(t) times). Counters split the wall time:
+// samples_ms (the N lives), fit_ms (summary + exact map), nominal_ms.
+// Arguments: samples, profile points (0 = the file's 240).
+void BM_LifeAtR(benchmark::State& state) {
+  const rackopt::Drive d = ship_lift_with(state.range(1), -1);
+  const rackopt::WearReliabilityOptions opt{.samples = state.range(0), .seed = 1, .threads = 1};
+  double samples_ms = 0, fit_ms = 0, nominal_ms = 0;
+  for (auto _ : state) {
+    const rackopt::WearReliabilityResult r = rackopt::run_wear_reliability(d, opt);
+    benchmark::DoNotOptimize(r.summary.life.data());
+    samples_ms += r.samples_ms;
+    fit_ms += r.fit_ms;
+    nominal_ms += r.nominal_ms;
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["samples_ms"] = samples_ms / n;
+  state.counters["fit_ms"] = fit_ms / n;
+  state.counters["nominal_ms"] = nominal_ms / n;
+}
+BENCHMARK(BM_LifeAtR)
+    ->ArgNames({"samples", "points"})
+    ->Args({1000, 0})
+    ->Args({1000, 60})
+    ->Args({10000, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+// Lives [s] of an N-sample run of the shipped problem (seed 1), computed once.
+const std::vector<double>& lives_seconds(long n) {
+  static std::vector<std::vector<double>> cache(2);
+  std::vector<double>& v = cache[n > 1000 ? 1 : 0];
+  if (v.empty()) {
+    const rackopt::WearReliabilityResult r =
+        rackopt::run_wear_reliability(ship_lift(), {.samples = n, .seed = 1, .threads = 1, .bootstrap_replicates = 20});
+    for (const auto& s : r.lives) v.push_back(s.value);
+  }
+  return v;
+}
+
+// summarize_lives alone (what fit_ms holds besides the exact map), one thread.
+// Arguments: samples (1000 or 10000), bootstrap replicates (200 = default, 20 = the minimum).
+void BM_SummarizeLives(benchmark::State& state) {
+  const std::vector<double>& lives = lives_seconds(state.range(0));
+  rackopt::reliability::ReliabilityRequest req;
+  req.reliabilities = {0.9, 0.95, 0.99};
+  req.bootstrap_replicates = static_cast<int>(state.range(1));
+  req.threads = 1;
+  for (auto _ : state) {
+    const auto s = rackopt::reliability::summarize_lives(lives, req);
+    benchmark::DoNotOptimize(s.life.data());
+  }
+}
+BENCHMARK(BM_SummarizeLives)
+    ->ArgNames({"samples", "replicates"})
+    ->Args({1000, 200})
+    ->Args({1000, 20})
+    ->Args({10000, 200})
+    ->Unit(benchmark::kMillisecond);
+
+// The cheap path for an optimizer: the empirical life at R (a copy and a sort)
+// and one lognormal MLE fit with its life at R, no bootstrap.
+void BM_EmpiricalAndOneFit(benchmark::State& state) {
+  const std::vector<double>& lives = lives_seconds(1000);
+  std::vector<double> positive;
+  std::copy_if(lives.begin(), lives.end(), std::back_inserter(positive), [](double x) { return x > 0; });
+  for (auto _ : state) {
+    const auto e = rackopt::reliability::empirical_life_at_reliability(lives, 0.9);
+    const auto f = rackopt::reliability::fit_life_distribution(rackopt::reliability::Family::kLognormal, positive);
+    benchmark::DoNotOptimize(e.estimate + rackopt::reliability::life_at_reliability(f.distribution, 0.9));
+  }
+}
+BENCHMARK(BM_EmpiricalAndOneFit)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
