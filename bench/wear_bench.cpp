@@ -3,7 +3,7 @@
 // samples < 100 ms, one core). docs/performance.md records the figures.
 //   ./build/wear_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // The 10^4-sample run takes ~10 s per iteration; skip it with
-//   --benchmark_filter=-'.*/10000.*'
+//   --benchmark_filter=-'.*samples:10000.*'
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
