@@ -1,0 +1,90 @@
+// Runs a StudySpec: builds the solver Problem from named metrics, drives the
+// sampler / optimizer / Pareto scalarization, records every evaluation in
+// <out>/evaluations.sqlite as it happens, and returns what the report needs.
+// Writing summary.json, CSVs, plots and report.md is study_report's job.
+//
+// Resume: with RunOptions::resume the same deterministic driver runs again;
+// every design already in the store is taken from it instead of being
+// evaluated, so nothing recorded is lost or evaluated twice, and the result
+// equals that of an uninterrupted run.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/study/study_spec.hpp"
+
+namespace rackopt::study {
+
+// One design as the report shows it.
+struct DesignResult {
+  std::vector<double> x;                 // SI, one per StudySpec::variables entry
+  std::vector<std::string> metric_labels;  // StudySpec::all_metrics() labels, in order
+  std::vector<double> metric_values;     // SI, same order; 0 where !metric_ok
+  std::vector<bool> metric_ok;
+  std::vector<double> objectives;        // in the metric's own sense and unit (not negated, not scaled)
+  double max_violation = 0;              // largest normalized constraint violation (0 = feasible), +inf when failed
+  bool ok = false;                       // every metric computed
+  bool feasible = false;                 // ok and max_violation <= solver.constraint_tolerance
+  std::string message;                   // why it failed, or remarks
+  std::string label;                     // "start 0", "front 3 (eps 2)", "sweep 17", "combination 2: pinion.module=25 mm"
+};
+
+struct StudyResult {
+  std::string status;   // "ok" (evaluate/sweep/reliability done), the SolverResult / ParetoResult status
+                        // (optimize: "converged", "max_evaluations", ...; pareto: "ok", "anchor_infeasible", ...),
+                        // "no_feasible_point", "all_failed", "stopped"
+  std::optional<DesignResult> best;            // optimize/evaluate/reliability: best feasible design;
+                                               // sweep: best feasible by objective 0 (if any objective)
+  std::optional<DesignResult> least_infeasible;  // when no feasible design was found
+  std::vector<DesignResult> front;             // pareto: feasible, non-dominated, sorted by objective 0
+  std::optional<std::size_t> chosen;           // pareto: index into front of the chosen design
+  std::vector<DesignResult> sweep_points;      // sweep: every point in sampler order
+  std::vector<double> best_history;            // best feasible objective 0 (own sense) after each evaluation
+  std::size_t evaluations = 0;                 // model evaluations this study needed (recorded + new)
+  std::size_t reused_evaluations = 0;          // of which taken from the store on --resume
+  std::size_t failed_evaluations = 0;
+  std::string solver_message;
+  std::vector<std::string> warnings;           // model warnings, listed once
+  double seconds = 0;                          // wall time of this run
+  std::string database_path;                   // <out>/evaluations.sqlite
+  std::string evaluations_csv_path;            // <out>/evaluations.csv, written by run_study from the store
+  // The drive of `best` (optimize/evaluate/reliability) or of the chosen
+  // front point (pareto): the report writes and plots its stiffness curve.
+  std::shared_ptr<const Drive> best_drive;
+  // reliability: the full wear reliability analysis of the design, for the
+  // same CSVs and plots as `rackopt wear` (output/wear_report.hpp).
+  std::shared_ptr<const WearReliabilityResult> reliability;
+};
+
+// Progress as the runner reports it (for the progress bar).
+struct Progress {
+  std::size_t done = 0, budget = 0;     // evaluations done, planned total (0 = unknown)
+  std::size_t failed = 0;
+  std::optional<double> best;           // best feasible objective 0 so far, own sense
+  std::string phase;                    // "anchor 1", "combination 2/6", "sweep"
+};
+
+struct RunOptions {
+  std::string out_dir;                  // created if missing; holds evaluations.sqlite
+  bool resume = false;
+  unsigned threads = 0;                 // sweeps and Monte Carlo; 0 = all cores. Results do not depend on it.
+  std::function<void(const Progress&)> progress;  // after every evaluation (may be empty)
+  std::function<bool()> stop;           // polled between evaluations; true = stop cleanly (Ctrl-C)
+};
+
+// Runs the study; at the end writes <out>/evaluations.csv from the store
+// (write_evaluations_csv) and sets the store's meta "status". Throws InputError for a set-up error found only now (a
+// metric requirement, a solver combination), std::runtime_error when the
+// store cannot be opened (another study's results in out_dir, a folder
+// already used without --resume). A design the models reject never throws:
+// it is a failed evaluation in the store and in the counts.
+StudyResult run_study(const StudySpec& spec, const RunOptions& options);
+
+}  // namespace rackopt::study

@@ -1,0 +1,30 @@
+#include "rackopt/study/study_spec.hpp"
+
+#include <set>
+
+namespace rackopt::study {
+
+const char* kind_name(StudyKind kind) {
+  switch (kind) {
+    case StudyKind::kEvaluate: return "evaluate";
+    case StudyKind::kSweep: return "sweep";
+    case StudyKind::kOptimize: return "optimize";
+    case StudyKind::kPareto: return "pareto";
+    case StudyKind::kReliability: return "reliability";
+  }
+  return "unknown";
+}
+
+std::vector<metrics::MetricRequest> StudySpec::all_metrics() const {
+  std::vector<metrics::MetricRequest> out;
+  std::set<std::string> seen;
+  auto add = [&](const metrics::MetricRequest& r) {
+    if (seen.insert(metrics::to_string(r)).second) out.push_back(r);
+  };
+  for (const auto& o : objectives) add(o.metric);
+  for (const auto& c : constraints) add(c.metric);
+  for (const auto& r : report_metrics) add(r);
+  return out;
+}
+
+}  // namespace rackopt::study

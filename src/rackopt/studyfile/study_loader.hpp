@@ -1,0 +1,33 @@
+// Study files (studies/*.yaml) -> StudySpec, with errors that say where and
+// why. docs/studies.md is the user-facing reference of every key.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rackopt/study/study_spec.hpp"
+
+namespace rackopt::study {
+
+// Reads and checks a study file. `overrides` are `--set` assignments:
+// "problem.<key>=value" is appended to problem_overrides (so any problem key
+// can be changed from the command line), anything else addresses the study
+// file itself ("solver.max_evaluations=50", "study.seed=3").
+// Also loads the problem once (so that a bad problem or a variable key the
+// problem does not know is reported before anything runs) and checks every
+// metric's requirements (check_metric_requests) against it.
+// Throws InputError with file:line:column and the key path for: unknown keys
+// (with "did you mean"), a missing required key, a unit of the wrong kind,
+// bounds with lower >= upper, a start outside the bounds, discrete values not
+// ascending or not whole for count keys, an unknown metric or a parameter out
+// of range, an unknown kind, solver settings check_solver_settings refuses
+// (message says what to use instead), too many objectives for the kind,
+// a sweep bigger than max_points, too many discrete combinations.
+StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Same, from text. `name_for_messages` is used in marks; relative problem
+// paths are resolved against `base_dir`.
+StudySpec load_study_text(const std::string& yaml_text, const std::string& name_for_messages,
+                          const std::string& base_dir, const std::vector<std::string>& overrides = {});
+
+}  // namespace rackopt::study
