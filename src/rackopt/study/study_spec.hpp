@@ -110,6 +110,7 @@ struct OutputSpec {
 struct StudySpec {
   std::string name;          // study.name (default: the file stem)
   std::string file;          // study file path as given (for messages)
+  std::string description;   // study.description (free text for the report; may be empty)
   StudyKind kind = StudyKind::kEvaluate;
   std::uint64_t seed = 1;    // study.seed: every random choice (LHS, Sobol shift, stochastic solvers, multistart, Monte Carlo)
 
