@@ -23,6 +23,11 @@ struct Material {
   std::string name;
   double youngs_modulus = 210e9;  // E [Pa]
   double poisson_ratio = 0.3;     // nu [-]
+  // Permissible stresses for the safety factors (docs/metrics.md): the
+  // allowable the computed stress is compared with, every life, size and
+  // surface factor already applied; minimum safety factors are NOT in them.
+  double allowable_bending = 0;   // sigma_FP, against the root stress sigma_F (incl. Y_S) [Pa]; 0 = not given
+  double allowable_contact = 0;   // sigma_HP, against the flank stress sigma_H [Pa]; 0 = not given
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
 };
 
@@ -65,6 +70,7 @@ struct RackSpec {
   double span = 2.4;             // support spacing l [m]
   Supports supports = Supports::kPinPin;
   double tooth_offset = -1.0;    // centre of the first tooth from the left support [m]; <0 = half a pitch
+  double root_radius = 0.0;      // root round for the root stress [m]; 0 = pinion cutter tip radius (tip_radius_coef m)
   Material material;
 };
 
@@ -72,9 +78,16 @@ struct Mounting {
   double clearance = 0.0;  // Delta [m]: rack datum moved away from the pinion centre (+ = apart)
 };
 
+// The ISO 6336 load factors multiply the nominal load in the stress metrics
+// only; the stiffness and wear models use `force` as it is. All >= 1.
 struct Load {
   double force = 0.0;   // normal mesh force along the line of action [N] (torque / r_b when given as torque)
   double torque = 0.0;  // pinion torque [N*m] as given (0 when the force was given)
+  double application_factor = 1.0;        // K_A
+  double dynamic_factor = 1.0;            // K_V
+  double face_load_factor = 1.0;          // K_Hbeta (contact)
+  double face_load_factor_bending = 0.0;  // K_Fbeta; 0 = K_Hbeta^N_F (ISO 6336-3, metrics::derived_face_load_factor_bending)
+  double transverse_load_factor = 1.0;    // K_Halpha = K_Falpha
 };
 
 enum class RackSpanModel {

@@ -52,11 +52,25 @@ constexpr KeySpec kKeySpecs[] = {
     {"rack.section.neutral_axis_depth", QuantityKind::kLength, 0, 10.0, true, false},
     {"rack.span", QuantityKind::kLength, 0, 100.0, true, false},
     {"rack.tooth_offset", QuantityKind::kLength, 0, kInf, false, true},
+    // 0 = the cutter tip radius; a round larger than the rack space is
+    // clamped by the stress model (it depends on the geometry).
+    {"rack.root_radius", QuantityKind::kLength, 0, 1.0, false, false},
     {"mounting.clearance", QuantityKind::kLength, -kInf, kInf, true, true},
     {"materials.*.E", QuantityKind::kModulus, 0, 2000e9, true, false},
     {"materials.*.nu", QuantityKind::kDimensionless, 0, 0.5, false, true},
+    // Permissible stresses: 5 GPa is several times any gear steel's (a
+    // case-hardened sigma_HP is ~1.5 GPa); above it a unit was forgotten.
+    {"materials.*.allowable_bending", QuantityKind::kModulus, 0, 5e9, true, false},
+    {"materials.*.allowable_contact", QuantityKind::kModulus, 0, 5e9, true, false},
     {"load.force", QuantityKind::kForce, 0, kInf, true, true},
     {"load.torque", QuantityKind::kTorque, 0, kInf, true, true},
+    // ISO 6336 load factors are >= 1 by definition (1 = no extra load);
+    // above 10 the simplified method is meaningless.
+    {"load.application_factor", QuantityKind::kDimensionless, 1, 10, false, false},
+    {"load.dynamic_factor", QuantityKind::kDimensionless, 1, 10, false, false},
+    {"load.face_load_factor", QuantityKind::kDimensionless, 1, 10, false, false},
+    {"load.face_load_factor_bending", QuantityKind::kDimensionless, 1, 10, false, false},
+    {"load.transverse_load_factor", QuantityKind::kDimensionless, 1, 10, false, false},
     {"faults[].tooth", QuantityKind::kCount, 0, 1e9, false, false},
     {"faults[].start", QuantityKind::kLength, 0, kInf, false, true},
     {"faults[].length", QuantityKind::kLength, 0, kInf, true, true},
@@ -261,8 +275,9 @@ class Block {
     return "a number";
   }
 
-  // A number of the key's kind, in SI, checked against the KeySpec range.
-  double number(const std::string& key, std::optional<double> fallback) const {
+  // A number of the key's kind, in SI, checked against the KeySpec range;
+  // `why` is appended to a range error.
+  double number(const std::string& key, std::optional<double> fallback, const std::string& why = "") const {
     const KeySpec& s = spec(key);
     const auto text = scalar(key, expected_text(s.kind));
     if (!text) {
@@ -270,7 +285,7 @@ class Block {
       return *fallback;
     }
     const double v = parse_quantity(text->first, s.kind, text->second, child_path(key));
-    check_range(key, v, s.lo, s.hi, s.lo_open, s.hi_open, "");
+    check_range(key, v, s.lo, s.hi, s.lo_open, s.hi_open, why);
     return v;
   }
 
@@ -796,11 +811,20 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
     const Block block(top.get("materials"), "materials", "materials", top.key_mark("materials"), {});
     if (block.node() != nullptr) {
       for (const auto& e : block.node()->entries) {
-        const Block m(&e.value, "materials." + e.key, "materials.*", e.key_mark, {"E", "nu"});
+        const Block m(&e.value, "materials." + e.key, "materials.*", e.key_mark,
+                      {"E", "nu", "allowable_bending", "allowable_contact"});
         if (m.node() == nullptr) {
           throw InputError(e.key_mark, m.path(), "a material needs E (modulus) and nu (Poisson's ratio)");
         }
-        materials[e.key] = Material{e.key, m.number("E", std::nullopt), m.number("nu", std::nullopt)};
+        Material material;
+        material.name = e.key;
+        material.youngs_modulus = m.number("E", std::nullopt);
+        material.poisson_ratio = m.number("nu", std::nullopt);
+        // A bare number is GPa (the modulus kind): "430" would be 430 GPa.
+        const std::string hint = " (a permissible stress; a bare number means GPa: write e.g. 430 MPa)";
+        material.allowable_bending = m.number("allowable_bending", 0.0, hint);
+        material.allowable_contact = m.number("allowable_contact", 0.0, hint);
+        materials[e.key] = material;
       }
     }
   }
@@ -836,7 +860,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   // --- rack
   const Block r(top.get("rack"), "rack", "rack", top.mark(),
                 {"addendum", "dedendum", "face_width", "body_height", "body_width", "section", "span", "supports",
-                 "tooth_offset", "material"});
+                 "tooth_offset", "root_radius", "material"});
   RackSpec& rack = drive.rack;
   rack.addendum_coef = r.number("addendum", 1.0);
   rack.dedendum_coef = r.number("dedendum", 1.25);
@@ -879,6 +903,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   const double pitch = kPi * pin.module;
   rack.tooth_offset = r.number("tooth_offset", 0.5 * pitch);
   r.check_range("tooth_offset", rack.tooth_offset, 0, rack.span, false, false, " (within the span rack.span)");
+  rack.root_radius = r.number("root_radius", 0.0, " (0 = the pinion cutter tip radius)");
   rack.material = find_material(materials, r, "material");
 
   // --- mounting
@@ -891,7 +916,9 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
                     " (-0.25 x module .. +1 x module)");
 
   // --- load
-  const Block load(top.get("load"), "load", "load", top.mark(), {"force", "torque"});
+  const Block load(top.get("load"), "load", "load", top.mark(),
+                   {"force", "torque", "application_factor", "dynamic_factor", "face_load_factor",
+                    "face_load_factor_bending", "transverse_load_factor"});
   const bool has_force = load.has("force");
   const bool has_torque = load.has("torque");
   if (has_force && has_torque) {
@@ -912,6 +939,17 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
     // change r_b).
     const double base_radius = 0.5 * pin.module * pin.teeth * std::cos(pin.pressure_angle);
     drive.load.force = drive.load.torque / base_radius;
+  }
+  {
+    const std::string why = " (ISO 6336 load factors are >= 1; 1 = no extra load)";
+    const Load ld;
+    drive.load.application_factor = load.number("application_factor", ld.application_factor, why);
+    drive.load.dynamic_factor = load.number("dynamic_factor", ld.dynamic_factor, why);
+    drive.load.face_load_factor = load.number("face_load_factor", ld.face_load_factor, why);
+    // Absent: 0, derived from K_Hbeta and the tooth proportions where the
+    // stresses are computed (so it follows a varied module or face width).
+    drive.load.face_load_factor_bending = load.number("face_load_factor_bending", 0.0, why);
+    drive.load.transverse_load_factor = load.number("transverse_load_factor", ld.transverse_load_factor, why);
   }
 
   // --- effects

@@ -31,7 +31,12 @@ namespace rackopt {
 // point; constant: the surface), a case-hardened limit (0.8 x surface) and
 // duty.pinion_meshes_per_year (= the rack's). Exceptions, on purpose:
 // wear.coefficient stays 0 when the file has no `wear` section (wear not
-// configured), and duty stays 0 when it has no `duty` (lives in cycles only).
+// configured), and duty stays 0 when it has no `duty` (lives in cycles only);
+// the stress inputs keep their "not given" 0 too: material allowables (the
+// safety metrics then refuse to run), rack.root_radius (= the cutter tip
+// radius) and load.face_load_factor_bending (derived from K_Hbeta where the
+// stresses are computed, metrics::drive_load_factors). Load factors < 1 are
+// refused (ISO 6336 factors are >= 1).
 // A `wear` section requires wear.coefficient and a hardness for both members.
 Drive load_problem(const std::string& path, const std::vector<std::string>& overrides = {});
 
