@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
@@ -38,6 +40,11 @@ bool has(std::uint8_t bits, Requirement r) { return (bits & static_cast<std::uin
   throw InputError(SourceMark{"<metric options>", 0, 0}, key, message);
 }
 
+// A problem key the metrics need: reported against the problem file.
+[[noreturn]] void missing_in_problem(const Drive& drive, const std::string& key, const std::string& message) {
+  throw InputError(SourceMark{drive.source_file.empty() ? "<problem>" : drive.source_file, 0, 0}, key, message);
+}
+
 std::string display(const MetricDefinition& def, double v) {
   if (def.kind) return format_quantity(v, *def.kind, def.display_unit, 4);
   char buf[64];
@@ -59,6 +66,32 @@ void add_warning(MetricValues& out, const std::string& w) {
 }
 
 }  // namespace
+
+StressInputs resolve_stress_inputs(const Drive& drive, const MetricOptions& o) {
+  auto pick = [](double option, double from_drive) { return option > 0 ? option : from_drive; };
+  StressInputs in;
+  const LoadFactors d = drive_load_factors(drive);
+  const LoadFactorOverrides& k = o.load_factors;
+  in.factors.application = pick(k.application, d.application);
+  in.factors.dynamic = pick(k.dynamic, d.dynamic);
+  in.factors.face_contact = pick(k.face_contact, d.face_contact);
+  in.factors.transverse_contact = pick(k.transverse_contact, d.transverse_contact);
+  in.factors.transverse_bending = pick(k.transverse_bending, d.transverse_bending);
+  // A derived K_Fbeta follows the K_Hbeta actually used.
+  const double drive_face_bending =
+      drive.load.face_load_factor_bending > 0 ? drive.load.face_load_factor_bending
+                                              : derived_face_load_factor_bending(drive, in.factors.face_contact);
+  in.factors.face_bending = pick(k.face_bending, drive_face_bending);
+
+  const Material& mp = drive.pinion.material;
+  const Material& mr = drive.rack.material;
+  in.allowable_bending_pinion = pick(o.allowable_bending_pinion, mp.allowable_bending);
+  in.allowable_contact_pinion = pick(o.allowable_contact_pinion, mp.allowable_contact);
+  in.allowable_bending_rack = pick(o.allowable_bending_rack, pick(mr.allowable_bending, o.allowable_bending_pinion));
+  in.allowable_contact_rack = pick(o.allowable_contact_rack, pick(mr.allowable_contact, o.allowable_contact_pinion));
+  in.rack_root_radius = pick(o.rack_root_radius, drive.rack.root_radius);
+  return in;
+}
 
 bool MetricValues::all_ok() const { return first_failure() == nullptr; }
 
@@ -100,13 +133,47 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   nonneg(o.allowable_contact_pinion, "allowable_contact_pinion");
   nonneg(o.allowable_contact_rack, "allowable_contact_rack");
   nonneg(o.rack_root_radius, "rack_root_radius");
-  if (has(req, Requirement::kAllowableBending) && !(o.allowable_bending_pinion > 0)) {
-    missing("allowable_bending_pinion", "root_bending_safety needs MetricOptions::allowable_bending_pinion > 0 "
-                                        "(proposed problem key materials.<name>.allowable_bending)");
+  nonneg(o.load_factors.application, "load_factors.application");
+  nonneg(o.load_factors.dynamic, "load_factors.dynamic");
+  nonneg(o.load_factors.face_bending, "load_factors.face_bending");
+  nonneg(o.load_factors.transverse_bending, "load_factors.transverse_bending");
+  nonneg(o.load_factors.face_contact, "load_factors.face_contact");
+  nonneg(o.load_factors.transverse_contact, "load_factors.transverse_contact");
+  // The problem key a member's allowable comes from. A drive built in code
+  // may have unnamed materials.
+  auto key_of = [](const Material& m, const char* which) {
+    return "materials." + (m.name.empty() ? std::string("<name>") : m.name) + "." + which;
+  };
+  // Drives built in code skip the loader's checks.
+  for (const Material* m : {&drive.pinion.material, &drive.rack.material}) {
+    for (const auto& [v, which] : {std::pair{m->allowable_bending, "allowable_bending"},
+                                   std::pair{m->allowable_contact, "allowable_contact"}}) {
+      if (!std::isfinite(v) || v < 0) {
+        missing_in_problem(drive, key_of(*m, which), "must be > 0 and finite (0 = not given)");
+      }
+    }
   }
-  if (has(req, Requirement::kAllowableContact) && !(o.allowable_contact_pinion > 0)) {
-    missing("allowable_contact_pinion", "contact_safety needs MetricOptions::allowable_contact_pinion > 0 "
-                                        "(proposed problem key materials.<name>.allowable_contact)");
+  const StressInputs in = resolve_stress_inputs(drive, o);
+  auto need = [&](double value, const char* metric, const char* member, const Material& m, const char* which,
+                  const char* option) {
+    if (value > 0) return;
+    const std::string key = key_of(m, which);
+    missing_in_problem(drive, key, std::string(metric) + " needs " + key + " (the permissible stress of the " + member +
+                     "'s material " + (m.name.empty() ? std::string("(unnamed)") : "'" + m.name + "'") +
+                     ", e.g. " + (std::string(which) == "allowable_bending" ? "740 MPa" : "1040 MPa") +
+                     "; docs/metrics.md), or MetricOptions::" + option + " > 0");
+  };
+  if (has(req, Requirement::kAllowableBending)) {
+    need(in.allowable_bending_pinion, "root_bending_safety", "pinion", drive.pinion.material, "allowable_bending",
+         "allowable_bending_pinion");
+    need(in.allowable_bending_rack, "root_bending_safety", "rack", drive.rack.material, "allowable_bending",
+         "allowable_bending_rack");
+  }
+  if (has(req, Requirement::kAllowableContact)) {
+    need(in.allowable_contact_pinion, "contact_safety", "pinion", drive.pinion.material, "allowable_contact",
+         "allowable_contact_pinion");
+    need(in.allowable_contact_rack, "contact_safety", "rack", drive.rack.material, "allowable_contact",
+         "allowable_contact_rack");
   }
   if (reliability) {
     const std::size_t n_inputs = drive.reliability.inputs.size();
@@ -238,6 +305,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
   // --- stresses ------------------------------------------------------------
   std::optional<ToothStress> stress;
   std::optional<Failure> stress_failure;
+  const StressInputs stress_in = resolve_stress_inputs(drive, o);
   if (needed.contains(Model::kStress)) {
     out.models_run.insert(Model::kStress);
     ++out.model_runs;
@@ -245,7 +313,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       stress_failure = geometry_failure;
     } else {
       try {
-        stress = tooth_stress(drive, *geometry, o.load_factors, o.rack_root_radius);
+        stress = tooth_stress(drive, *geometry, stress_in.factors, stress_in.rack_root_radius);
         if (stress->rack_root_radius_clamped) {
           add_warning(out, "rack root round clamped to the largest that fits the rack space: " +
                                  format_quantity(stress->rack_root_radius, QuantityKind::kLength, "mm", 4));
@@ -332,15 +400,16 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
         } else if (n == "rack_root_bending_stress") {
           oc = value(s.rack_root_stress);
         } else if (n == "root_bending_safety") {
-          const double rack_allow = o.allowable_bending_rack > 0 ? o.allowable_bending_rack : o.allowable_bending_pinion;
-          const double sp = o.allowable_bending_pinion / s.pinion_root_stress;
-          const double sr = rack_allow / s.rack_root_stress;
+          const double sp = stress_in.allowable_bending_pinion / s.pinion_root_stress;
+          const double sr = stress_in.allowable_bending_rack / s.rack_root_stress;
           oc = value(std::min(sp, sr), sp <= sr ? "pinion governs" : "rack governs");
         } else if (n == "contact_stress") {
           oc = value(s.contact_stress);
         } else if (n == "contact_safety") {
-          const double rack_allow = o.allowable_contact_rack > 0 ? o.allowable_contact_rack : o.allowable_contact_pinion;
-          oc = value(std::min(o.allowable_contact_pinion, rack_allow) / s.contact_stress);
+          // One contact stress for both flanks: the weaker material governs.
+          const double ap = stress_in.allowable_contact_pinion, ar = stress_in.allowable_contact_rack;
+          oc = value(std::min(ap, ar) / s.contact_stress,
+                     ap < ar ? "pinion governs" : ar < ap ? "rack governs" : "");
         }
       }
     }

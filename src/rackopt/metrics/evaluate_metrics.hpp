@@ -22,15 +22,33 @@
 
 namespace rackopt::metrics {
 
-// Inputs that are not (yet) problem keys. docs/metrics.md proposes the
-// problem keys for the allowables and the load factors.
+// Load factors that override the problem's (load.*): each 0 = not given,
+// take the drive's. An override applies to the one factor it names; a
+// K_Hbeta override also moves a derived K_Fbeta (load.face_load_factor_bending
+// absent), since that follows K_Hbeta.
+struct LoadFactorOverrides {
+  double application = 0;         // K_A      (load.application_factor)
+  double dynamic = 0;             // K_V      (load.dynamic_factor)
+  double face_bending = 0;        // K_Fbeta  (load.face_load_factor_bending)
+  double transverse_bending = 0;  // K_Falpha (load.transverse_load_factor)
+  double face_contact = 0;        // K_Hbeta  (load.face_load_factor)
+  double transverse_contact = 0;  // K_Halpha (load.transverse_load_factor)
+};
+
+// Overrides of problem keys for the stress metrics, and settings of the
+// metric computations. Every stress input is a problem key (docs/yaml.md);
+// a value here > 0 wins over the drive's, 0 (the default) takes the drive's.
 struct MetricOptions {
-  LoadFactors load_factors;               // K_A, K_V, K_Fbeta, K_Falpha, K_Hbeta, K_Halpha
-  double allowable_bending_pinion = 0;    // sigma_FP pinion [Pa]; 0 = not given
-  double allowable_bending_rack = 0;      // sigma_FP rack [Pa]; 0 = same as the pinion
-  double allowable_contact_pinion = 0;    // sigma_HP pinion [Pa]; 0 = not given
-  double allowable_contact_rack = 0;      // sigma_HP rack [Pa]; 0 = same as the pinion
-  double rack_root_radius = 0;            // rack root round [m]; 0 = pinion cutter tip radius
+  LoadFactorOverrides load_factors;
+  // Permissible stresses [Pa]. 0: from the member's material
+  // (materials.<name>.allowable_bending / allowable_contact). A rack value
+  // that neither this nor the rack's material gives falls back to the
+  // pinion's value given here (the pre-problem-key behaviour).
+  double allowable_bending_pinion = 0;    // sigma_FP pinion
+  double allowable_bending_rack = 0;      // sigma_FP rack
+  double allowable_contact_pinion = 0;    // sigma_HP pinion
+  double allowable_contact_rack = 0;      // sigma_HP rack
+  double rack_root_radius = 0;            // rack root round [m]; 0 = rack.root_radius
 
   // wear_life_at_R (docs/metrics.md)
   bool exact_quantile = true;      // one random input: life at R from its quantile (no sampling error)
@@ -68,10 +86,22 @@ struct MetricValues {
   const MetricValue& at(std::string_view label) const;
 };
 
+// The stress inputs evaluate_metrics uses: options over the drive, as
+// MetricOptions describes. An allowable stays 0 when neither gives it.
+struct StressInputs {
+  LoadFactors factors;
+  double allowable_bending_pinion = 0, allowable_bending_rack = 0;  // [Pa]
+  double allowable_contact_pinion = 0, allowable_contact_rack = 0;  // [Pa]
+  double rack_root_radius = 0;  // [m]; 0 = pinion cutter tip radius
+};
+StressInputs resolve_stress_inputs(const Drive& drive, const MetricOptions& options);
+
 // Throws InputError when a request is invalid (resolve_request) or its
 // requirements are not configured (wear section, duty, allowables), or an
-// option is out of range, naming what is missing. Cheap; evaluate_metrics
-// calls it first, and a study can call it once before its first design.
+// option is out of range, naming what is missing: for an allowable, the
+// problem key to add (materials.<the member's material>.allowable_bending).
+// Cheap; evaluate_metrics calls it first, and a study can call it once
+// before its first design.
 void check_metric_requests(const Drive& drive, std::span<const MetricRequest> requests,
                            const MetricOptions& options);
 

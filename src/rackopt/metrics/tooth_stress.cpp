@@ -144,6 +144,31 @@ RootSection rack_root_section(const Drive& drive, const MeshGeometry& g, double 
   return out;
 }
 
+double derived_face_load_factor_bending(const Drive& drive, double face_load_factor_contact) {
+  const PinionSpec& pin = drive.pinion;
+  const RackSpec& rack = drive.rack;
+  const double b_rack = rack.face_width > 0 ? rack.face_width : pin.face_width;
+  const double h_pinion = (pin.addendum_coef + pin.dedendum_coef) * pin.module;
+  const double h_rack = (rack.addendum_coef + rack.dedendum_coef) * pin.module;
+  const double bh = std::max(3.0, std::min(pin.face_width / h_pinion, b_rack / h_rack));
+  // Written in 1/bh so that a degenerate tooth (bh -> inf) gives N_F -> 1, not inf/inf.
+  const double nf = 1.0 / (1.0 + 1.0 / bh + 1.0 / (bh * bh));
+  return std::pow(face_load_factor_contact, nf);
+}
+
+LoadFactors drive_load_factors(const Drive& drive) {
+  const Load& l = drive.load;
+  LoadFactors k;
+  k.application = l.application_factor;
+  k.dynamic = l.dynamic_factor;
+  k.face_contact = l.face_load_factor;
+  k.face_bending = l.face_load_factor_bending > 0 ? l.face_load_factor_bending
+                                                  : derived_face_load_factor_bending(drive, l.face_load_factor);
+  k.transverse_contact = l.transverse_load_factor;
+  k.transverse_bending = l.transverse_load_factor;
+  return k;
+}
+
 ToothStress tooth_stress(const Drive& drive, const MeshGeometry& g, const LoadFactors& k, double rack_root_radius) {
   check_factor(k.application, "application_factor");
   check_factor(k.dynamic, "dynamic_factor");
@@ -171,7 +196,9 @@ ToothStress tooth_stress(const Drive& drive, const MeshGeometry& g, const LoadFa
   out.contact_ratio_factor = 0.25 + 0.75 / eps;
 
   out.pinion = pinion_root_section(pin, g);
-  double rho = rack_root_radius > 0 ? rack_root_radius : pin.tip_radius_coef * m;
+  double rho = rack_root_radius > 0       ? rack_root_radius
+               : drive.rack.root_radius > 0 ? drive.rack.root_radius
+                                            : pin.tip_radius_coef * m;
   const double rho_max = rack_root_radius_limit(g, m);
   if (rho > rho_max) {
     rho = rho_max;

@@ -35,6 +35,7 @@
 namespace rackopt::metrics {
 
 // Load factors of ISO 6336 (all >= 1 in practice; must be > 0).
+// tooth_stress uses exactly these; drive_load_factors gives the problem's.
 struct LoadFactors {
   double application = 1;         // K_A
   double dynamic = 1;             // K_V
@@ -87,8 +88,22 @@ RootSection rack_root_section(const Drive& drive, const MeshGeometry& geometry, 
 // (pi m/2 - w_f) cos a0 / (1 - sin a0), w_f the tooth half thickness at the root.
 double rack_root_radius_limit(const MeshGeometry& geometry, double module);
 
+// ISO 6336-3 face load factor for the root stress from the contact one:
+// K_Fbeta = K_Hbeta^N_F, N_F = (b/h)^2 / (1 + b/h + (b/h)^2), b/h the smaller
+// of the pinion's and the rack's face width over tooth depth
+// ((h_a* + h_f*) m each), taken as 3 when below 3 (ISO's rule for short
+// teeth). K_Hbeta >= 1 gives 1 <= K_Fbeta <= K_Hbeta.
+double derived_face_load_factor_bending(const Drive& drive, double face_load_factor_contact);
+
+// The problem's load factors (drive.load): K_Fbeta = face_load_factor_bending
+// when given (> 0), else derived_face_load_factor_bending(drive, K_Hbeta);
+// K_Falpha = K_Halpha = transverse_load_factor.
+LoadFactors drive_load_factors(const Drive& drive);
+
 // Both root stresses and the contact stress of `drive` (geometry from
-// build_mesh_geometry(drive)). rack_root_radius <= 0 takes the pinion cutter
+// build_mesh_geometry(drive)) with the load factors `factors` as given (not
+// the drive's: pass drive_load_factors(drive) for those). rack_root_radius
+// <= 0 takes drive.rack.root_radius, and when that is 0 too the pinion cutter
 // tip radius (tip_radius_coef m: the same basic rack profile); a radius larger
 // than the rack space holds is clamped to rack_root_radius_limit (flagged).
 // Throws InputError for a load <= 0 or a non-positive load factor, and
