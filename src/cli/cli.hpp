@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "rackopt/output/plot.hpp"
+
 namespace rackopt::cli {
 
 constexpr int kOk = 0;
@@ -30,11 +32,8 @@ struct UsageError : std::runtime_error {
 // Parses argv; throws UsageError for unknown options or missing values.
 Args parse_args(int argc, char** argv);
 
-// Runs gnuplot on DIR/script (which writes `png`.tmp); renames it to DIR/png so
-// a failed plot never leaves a half-written image. Returns the PNG path, or ""
-// with a warning appended when gnuplot is missing or fails.
-std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
-                        std::vector<std::string>& warnings);
+// render_plot lives in the library (rackopt/output/plot.hpp): studies plot too.
+using rackopt::render_plot;
 
 double ms_since(std::chrono::steady_clock::time_point t0);
 

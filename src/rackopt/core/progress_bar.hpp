@@ -23,10 +23,17 @@ class ProgressBar {
   void tick(long n = 1);
   long done() const { return done_.load(); }
 
+  // Absolute progress for runs that report it themselves (a study): `done`
+  // units of `total` (total <= 0: unknown, no bar and no estimate, or the
+  // total grew past it), and `detail` shown after the counts ("best 0.231,
+  // 2 failed"). Same drawing rules as tick(). Call from one thread at a time.
+  void update(long done, long total, const std::string& detail);
+
  private:
   void draw(bool final_line);
-  long total_;
+  std::atomic<long> total_;
   std::string what_;
+  std::string detail_;  // guarded by mutex_
   bool enabled_;
   std::atomic<long> done_{0};
   std::chrono::steady_clock::time_point start_;

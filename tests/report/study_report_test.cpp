@@ -1,0 +1,512 @@
+// The study report writer on synthetic StudySpec/StudyResult values: what
+// summary.json says is what the result holds, every table has one row per
+// design, report.md links only files that exist, a missing gnuplot is a
+// warning.
+#include "rackopt/report/study_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/output/plot.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rackopt;
+using namespace rackopt::study;
+
+std::string tmp_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("rackopt_report_test_" + name);
+  fs::remove_all(dir);
+  return dir.string();
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> row;
+    std::string cell;
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        row.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+ObjectiveSpec objective(const std::string& text, bool maximize = false) {
+  ObjectiveSpec o;
+  o.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  o.label = metrics::to_string(o.metric);
+  o.maximize = maximize;
+  return o;
+}
+
+ConstraintSpec constraint_min(const std::string& text, double min) {
+  ConstraintSpec c;
+  c.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  c.label = metrics::to_string(c.metric);
+  c.min = min;
+  return c;
+}
+
+DesignVariable variable(const std::string& key, QuantityKind kind, const std::string& unit, double lo, double hi) {
+  DesignVariable v;
+  v.key = key;
+  v.kind = kind;
+  v.unit = unit;
+  v.lower = lo;
+  v.upper = hi;
+  return v;
+}
+
+// Two variables (module in mm, span in m), objective stiffness_fluctuation,
+// constraint contact_ratio >= 1.3, extra metric min_stiffness.
+StudySpec base_spec(StudyKind kind) {
+  StudySpec s;
+  s.name = "synthetic";
+  s.file = "synthetic.yaml";
+  s.description = "A made-up study whose metrics are simple functions of x.";
+  s.kind = kind;
+  s.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml";
+  s.variables.push_back(variable("pinion.module", QuantityKind::kLength, "mm", 0.02, 0.032));
+  s.variables.push_back(variable("rack.span", QuantityKind::kLength, "m", 1.2, 3.0));
+  s.objectives.push_back(objective("stiffness_fluctuation"));
+  s.constraints.push_back(constraint_min("contact_ratio", 1.3));
+  s.report_metrics.push_back(metrics::parse_metric_request("min_stiffness"));
+  return s;
+}
+
+// A design whose metrics are simple functions of x, so every number in the
+// report can be traced back: fluctuation = module*10 + span/100,
+// contact_ratio = 1 + span/4, min_stiffness = 1e8 * module.
+DesignResult design(const StudySpec& spec, double module, double span, const std::string& label) {
+  DesignResult d;
+  d.x = {module, span};
+  for (const auto& m : spec.all_metrics()) d.metric_labels.push_back(metrics::to_string(m));
+  for (const auto& l : d.metric_labels) {
+    double v = 0;
+    if (l == "stiffness_fluctuation") v = module * 10 + span / 100;
+    if (l == "supports_per_metre") v = 1.0 / span;
+    if (l == "contact_ratio") v = 1 + span / 4;
+    if (l == "min_stiffness") v = 1e8 * module;
+    d.metric_values.push_back(v);
+    d.metric_ok.push_back(true);
+  }
+  for (const auto& o : spec.objectives) {
+    for (std::size_t i = 0; i < d.metric_labels.size(); ++i) {
+      if (d.metric_labels[i] == o.label) d.objectives.push_back(d.metric_values[i]);
+    }
+  }
+  const double cr = 1 + span / 4;
+  d.max_violation = std::max(0.0, (1.3 - cr) / 1.3);
+  d.ok = true;
+  d.feasible = d.max_violation <= 1e-6;
+  d.label = label;
+  return d;
+}
+
+// Every link target of report.md, relative to its folder.
+std::vector<std::string> markdown_links(const std::string& md) {
+  std::vector<std::string> out;
+  const std::regex link(R"(\]\(([^)]+)\))");
+  for (auto it = std::sregex_iterator(md.begin(), md.end(), link); it != std::sregex_iterator(); ++it) {
+    out.push_back((*it)[1].str());
+  }
+  return out;
+}
+
+void expect_links_exist(const std::string& dir) {
+  const std::string md = slurp(dir + "/report.md");
+  ASSERT_FALSE(md.empty());
+  const auto links = markdown_links(md);
+  EXPECT_FALSE(links.empty());
+  for (const auto& l : links) {
+    const fs::path p = fs::path(l).is_absolute() ? fs::path(l) : fs::path(dir) / l;
+    EXPECT_TRUE(fs::exists(p)) << "report.md links a missing file: " << l;
+  }
+}
+
+TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
+  const StudySpec spec = base_spec(StudyKind::kOptimize);
+  StudyResult r;
+  r.status = "converged";
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.evaluations = 40;
+  r.reused_evaluations = 8;
+  r.failed_evaluations = 3;
+  r.seconds = 0.64;
+  for (int i = 0; i < 40; ++i) {
+    r.best_history.push_back(i < 5 ? std::numeric_limits<double>::infinity() : 1.0 / (i + 1));
+  }
+  r.warnings = {"model says hello"};
+  r.best_drive = std::make_shared<const Drive>(load_problem(spec.problem_path));
+
+  const std::string dir = tmp_dir("optimize");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(slurp(dir + "/summary.json"));
+  EXPECT_EQ(j, nlohmann::json::parse(rep.summary_json));
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["kind"], "optimize");
+  EXPECT_EQ(j["study"], "synthetic");
+  EXPECT_EQ(j["evaluations"], 40);
+  EXPECT_EQ(j["failed_evaluations"], 3);
+  EXPECT_EQ(j["reused_evaluations"], 8);
+  EXPECT_DOUBLE_EQ(j["timings"]["seconds"].get<double>(), 0.64);
+  // 32 new evaluations in 0.64 s
+  EXPECT_NEAR(j["timings"]["per_evaluation_ms"].get<double>(), 20.0, 1e-9);
+  const auto& best = j["best"];
+  EXPECT_DOUBLE_EQ(best["variables"]["pinion.module"]["value"].get<double>(), 0.025);
+  EXPECT_EQ(best["variables"]["pinion.module"]["display"], "25 mm");
+  EXPECT_EQ(best["variables"]["rack.span"]["display"], "2 m");
+  EXPECT_DOUBLE_EQ(best["metrics"]["stiffness_fluctuation"]["value"].get<double>(), 0.025 * 10 + 0.02);
+  EXPECT_DOUBLE_EQ(best["metrics"]["min_stiffness"]["value"].get<double>(), 2.5e6);
+  EXPECT_EQ(best["metrics"]["min_stiffness"]["display"], "2.5 MN/m");
+  EXPECT_TRUE(best["metrics"]["contact_ratio"]["ok"].get<bool>());
+  EXPECT_TRUE(best["feasible"].get<bool>());
+  EXPECT_EQ(best["objectives"][0]["metric"], "stiffness_fluctuation");
+  EXPECT_EQ(best["objectives"][0]["sense"], "minimize");
+  EXPECT_FALSE(j.contains("front"));
+  EXPECT_FALSE(j.contains("least_infeasible"));
+  EXPECT_EQ(j["warnings"][0], "model says hello");
+
+  // Every file the summary names exists, and the tables have one row per design.
+  for (const auto& [role, path] : j["files"].items()) EXPECT_TRUE(fs::exists(path.get<std::string>())) << role;
+  for (const char* role : {"best_csv", "history_csv", "stiffness_csv", "report_md", "summary_json"}) {
+    EXPECT_TRUE(j["files"].contains(role)) << role;
+  }
+  const auto bestcsv = read_csv(dir + "/best.csv");
+  ASSERT_EQ(bestcsv.size(), 2u);
+  const int mcol = column(bestcsv[0], "pinion.module_m");
+  const int mmcol = column(bestcsv[0], "pinion.module_mm");
+  const int kcol = column(bestcsv[0], "min_stiffness_N_per_m");
+  ASSERT_GE(mcol, 0);
+  ASSERT_GE(mmcol, 0);
+  ASSERT_GE(kcol, 0);
+  EXPECT_EQ(std::strtod(bestcsv[1][mcol].c_str(), nullptr), 0.025);  // SI round trip, bit for bit
+  EXPECT_NEAR(std::strtod(bestcsv[1][mmcol].c_str(), nullptr), 25.0, 1e-9);
+  EXPECT_EQ(std::strtod(bestcsv[1][kcol].c_str(), nullptr), 2.5e6);
+  EXPECT_EQ(bestcsv[1][column(bestcsv[0], "role")], "best");
+
+  const auto hist = read_csv(dir + "/history.csv");
+  ASSERT_EQ(hist.size(), 41u);
+  EXPECT_EQ(hist[0][0], "evaluation");
+  EXPECT_EQ(hist[1][1], "");  // no feasible point yet
+  EXPECT_DOUBLE_EQ(std::strtod(hist[40][1].c_str(), nullptr), 1.0 / 40);
+  EXPECT_GT(read_csv(dir + "/stiffness.csv").size(), 10u);
+
+  if (gnuplot_available()) {
+    EXPECT_TRUE(fs::exists(dir + "/history.png"));
+    EXPECT_TRUE(fs::exists(dir + "/stiffness.png"));
+    EXPECT_TRUE(j["files"].contains("history_png"));
+  }
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+    EXPECT_NE(e.path().extension(), ".log") << e.path();
+  }
+  expect_links_exist(dir);
+  const std::string md = slurp(dir + "/report.md");
+  EXPECT_NE(md.find("converged"), std::string::npos);
+  EXPECT_NE(md.find("25 mm"), std::string::npos);
+  EXPECT_NE(md.find("contact_ratio"), std::string::npos);
+  EXPECT_NE(md.find("model says hello"), std::string::npos);
+  EXPECT_NE(md.find(spec.description), std::string::npos);
+  EXPECT_EQ(j["description"], spec.description);
+}
+
+StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t chosen) {
+  StudyResult r;
+  r.status = "ok";
+  for (std::size_t k = 0; k < points; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(points - 1);
+    r.front.push_back(design(spec, 0.02 + 0.012 * t, 3.0 - 1.8 * t, "eps " + std::to_string(k)));
+  }
+  r.chosen = chosen;
+  r.evaluations = 200;
+  r.seconds = 1.0;
+  r.best_history = std::vector<double>(200, 0.3);
+  return r;
+}
+
+TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
+  StudySpec spec = base_spec(StudyKind::kPareto);
+  spec.objectives.push_back(objective("supports_per_metre"));
+  const StudyResult r = pareto_result(spec, 7, 4);
+  const std::string dir = tmp_dir("pareto2");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["kind"], "pareto");
+  ASSERT_EQ(j["front"].size(), 7u);
+  EXPECT_EQ(j["chosen"], 4);
+  int chosen = 0;
+  for (std::size_t k = 0; k < 7; ++k) {
+    const auto& p = j["front"][k];
+    chosen += p["chosen"].get<bool>() ? 1 : 0;
+    EXPECT_EQ(p["chosen"].get<bool>(), k == 4);
+    // JSON numbers carry 10 significant digits (JsonWriter); the CSVs are exact.
+    EXPECT_NEAR(p["objectives"][1]["value"].get<double>(), 1.0 / r.front[k].x[1], 1e-9);
+    EXPECT_NEAR(p["variables"]["rack.span"]["value"].get<double>(), r.front[k].x[1], 1e-9 * 3);
+  }
+  EXPECT_EQ(chosen, 1);
+  EXPECT_TRUE(j["best"].is_null());
+
+  const auto front = read_csv(dir + "/front.csv");
+  ASSERT_EQ(front.size(), 8u);
+  const int ccol = column(front[0], "chosen");
+  const int scol = column(front[0], "supports_per_metre_per_m");
+  ASSERT_GE(ccol, 0);
+  ASSERT_GE(scol, 0);
+  for (std::size_t k = 0; k < 7; ++k) {
+    EXPECT_EQ(front[k + 1][ccol], k == 4 ? "1" : "0");
+    EXPECT_EQ(std::strtod(front[k + 1][scol].c_str(), nullptr), 1.0 / r.front[k].x[1]);
+  }
+  if (gnuplot_available()) {
+    EXPECT_TRUE(fs::exists(dir + "/pareto.png"));
+  }
+  EXPECT_FALSE(fs::exists(dir + "/best.csv"));
+  expect_links_exist(dir);
+  EXPECT_NE(slurp(dir + "/report.md").find("**chosen**"), std::string::npos);
+}
+
+TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
+  StudySpec spec = base_spec(StudyKind::kPareto);
+  spec.objectives.push_back(objective("supports_per_metre"));
+  spec.objectives.push_back(objective("min_stiffness", true));
+  const StudyResult r = pareto_result(spec, 9, 0);
+  const std::string dir = tmp_dir("pareto3");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const std::string gp = slurp(dir + "/pareto.gp");
+  EXPECT_NE(gp.find("multiplot layout 1,3"), std::string::npos);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["front"][0]["objectives"][2]["sense"], "maximize");
+  if (gnuplot_available()) {
+    EXPECT_TRUE(fs::exists(dir + "/pareto.png"));
+  }
+}
+
+TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {
+  StudySpec spec = base_spec(StudyKind::kSweep);
+  StudyResult r;
+  r.status = "ok";
+  for (int a = 0; a < 5; ++a) {
+    for (int b = 0; b < 4; ++b) {
+      DesignResult d = design(spec, 0.02 + 0.003 * a, 0.4 + 0.8 * b, "sweep " + std::to_string(a * 4 + b));
+      r.sweep_points.push_back(d);
+    }
+  }
+  // one failed point: metric columns empty, ok = 0
+  r.sweep_points[3].ok = false;
+  r.sweep_points[3].feasible = false;
+  r.sweep_points[3].metric_ok.assign(r.sweep_points[3].metric_ok.size(), false);
+  r.sweep_points[3].max_violation = std::numeric_limits<double>::infinity();
+  r.sweep_points[3].message = "pointed tooth, \"really\"";
+  r.best = r.sweep_points[0];
+  r.evaluations = 20;
+  r.failed_evaluations = 1;
+  const std::string dir = tmp_dir("sweep");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["sweep_points"], 20);
+  std::size_t expect_feasible = 0;
+  for (const auto& d : r.sweep_points) expect_feasible += d.feasible ? 1 : 0;
+  EXPECT_EQ(j["feasible_points"], expect_feasible);
+
+  const auto t = read_csv(dir + "/sweep.csv");
+  ASSERT_EQ(t.size(), 21u);
+  const int fcol = column(t[0], "feasible");
+  const int okcol = column(t[0], "ok");
+  const int crcol = column(t[0], "contact_ratio");
+  const int vcol = column(t[0], "max_violation");
+  ASSERT_GE(fcol, 0);
+  ASSERT_GE(crcol, 0);
+  for (std::size_t i = 0; i < 20; ++i) {
+    ASSERT_EQ(t[i + 1].size(), t[0].size()) << "row " << i;
+    EXPECT_EQ(t[i + 1][fcol], r.sweep_points[i].feasible ? "1" : "0");
+    // feasible exactly when contact ratio >= 1.3 (for the points that computed)
+    if (i != 3) {
+      EXPECT_EQ(t[i + 1][fcol] == "1", std::strtod(t[i + 1][crcol].c_str(), nullptr) >= 1.3) << i;
+    }
+  }
+  EXPECT_EQ(t[4][okcol], "0");
+  EXPECT_EQ(t[4][crcol], "");
+  EXPECT_EQ(t[4][vcol], "");
+  EXPECT_EQ(t[4].back(), "pointed tooth, \"really\"");  // CSV-quoted, last column
+  EXPECT_TRUE(j["files"].contains("best_csv"));
+  if (gnuplot_available()) {
+    EXPECT_TRUE(fs::exists(dir + "/sweep.png"));
+  }
+  expect_links_exist(dir);
+}
+
+TEST(StudyReport, NoFeasiblePointShowsTheLeastInfeasibleDesign) {
+  const StudySpec spec = base_spec(StudyKind::kOptimize);
+  StudyResult r;
+  r.status = "no_feasible_point";
+  r.least_infeasible = design(spec, 0.02, 0.8, "start 0");  // contact ratio 1.2 < 1.3
+  ASSERT_FALSE(r.least_infeasible->feasible);
+  r.evaluations = 12;
+  r.best_history = std::vector<double>(12, std::numeric_limits<double>::infinity());
+  const std::string dir = tmp_dir("infeasible");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["status"], "no_feasible_point");
+  EXPECT_TRUE(j["best"].is_null());
+  EXPECT_FALSE(j["feasible"].get<bool>());
+  ASSERT_TRUE(j.contains("least_infeasible"));
+  EXPECT_NEAR(j["least_infeasible"]["max_violation"].get<double>(), (1.3 - 1.2) / 1.3, 1e-10);
+  EXPECT_NE(j["message"].get<std::string>().find("least infeasible"), std::string::npos);
+  const auto b = read_csv(dir + "/best.csv");
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[1][column(b[0], "role")], "least_infeasible");
+  EXPECT_EQ(b[1][column(b[0], "feasible")], "0");
+  // no finite history: no convergence plot
+  EXPECT_FALSE(fs::exists(dir + "/history.png"));
+  expect_links_exist(dir);
+  EXPECT_NE(slurp(dir + "/report.md").find("Least infeasible design"), std::string::npos);
+}
+
+TEST(StudyReport, StoppedStudySaysHowToResume) {
+  const StudySpec spec = base_spec(StudyKind::kOptimize);
+  StudyResult r;
+  r.status = "stopped";
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.evaluations = 9;
+  const std::string dir = tmp_dir("stopped");
+  const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
+  EXPECT_EQ(j["status"], "stopped");
+  EXPECT_NE(j["message"].get<std::string>().find("--resume"), std::string::npos);
+}
+
+TEST(StudyReport, FailedDesignWritesNullsNotNaN) {
+  const StudySpec spec = base_spec(StudyKind::kEvaluate);
+  StudyResult r;
+  r.status = "all_failed";
+  DesignResult d = design(spec, 0.02, 1.0, "start 0");
+  d.ok = false;
+  d.feasible = false;
+  d.metric_ok.assign(d.metric_ok.size(), false);
+  d.metric_values.assign(d.metric_values.size(), 0.0);
+  d.objectives = {std::numeric_limits<double>::quiet_NaN()};
+  d.max_violation = std::numeric_limits<double>::infinity();
+  d.message = "undercut beyond the limit";
+  r.least_infeasible = d;
+  r.evaluations = 1;
+  r.failed_evaluations = 1;
+  const std::string dir = tmp_dir("failed");
+  const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
+  const auto& li = j["least_infeasible"];
+  EXPECT_TRUE(li["max_violation"].is_null());
+  EXPECT_TRUE(li["metrics"]["contact_ratio"]["value"].is_null());
+  EXPECT_FALSE(li["metrics"]["contact_ratio"]["ok"].get<bool>());
+  EXPECT_TRUE(li["objectives"][0]["value"].is_null());
+  EXPECT_NE(j["message"].get<std::string>().find("undercut beyond the limit"), std::string::npos);
+  EXPECT_EQ(j["timings"]["per_evaluation_ms"].get<double>(), 0.0);  // 0 s over 1 evaluation
+}
+
+TEST(StudyReport, MissingGnuplotIsAWarningAndNothingLinksAPlot) {
+  const StudySpec spec = base_spec(StudyKind::kOptimize);
+  StudyResult r;
+  r.status = "converged";
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.evaluations = 3;
+  r.best_history = {0.5, 0.4, 0.3};
+  const std::string dir = tmp_dir("nognuplot");
+  ::setenv("RACKOPT_GNUPLOT", "/nonexistent/gnuplot-for-rackopt-tests", 1);
+  const StudyReport rep = write_study_report(spec, r, dir);
+  ::unsetenv("RACKOPT_GNUPLOT");
+  ASSERT_FALSE(rep.warnings.empty());
+  EXPECT_NE(rep.warnings[0].find("not found"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir + "/history.png"));
+  EXPECT_TRUE(fs::exists(dir + "/history.gp"));  // the script is there to run by hand
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_FALSE(j["files"].contains("history_png"));
+  EXPECT_EQ(j["warnings"].size(), rep.warnings.size());
+  const std::string md = slurp(dir + "/report.md");
+  EXPECT_EQ(md.find(".png"), std::string::npos);
+  expect_links_exist(dir);
+}
+
+TEST(StudyReport, OutputSwitchesTurnPlotsAndReportOff) {
+  StudySpec spec = base_spec(StudyKind::kOptimize);
+  spec.output.plots = false;
+  spec.output.report = false;
+  StudyResult r;
+  r.status = "converged";
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.best_history = {0.5};
+  const std::string dir = tmp_dir("switches");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  EXPECT_FALSE(fs::exists(dir + "/report.md"));
+  EXPECT_FALSE(fs::exists(dir + "/history.gp"));
+  EXPECT_TRUE(fs::exists(dir + "/summary.json"));
+  for (const auto& w : rep.written) EXPECT_TRUE(fs::exists(w)) << w;
+}
+
+TEST(RenderPlot, FailingScriptLeavesNoImageAndWarns) {
+  const std::string dir = tmp_dir("badplot");
+  fs::create_directories(dir);
+  std::ofstream(dir + "/bad.gp") << "set terminal pngcairo\nset output 'bad.png.tmp'\nplot 'missing.csv' using 1:2\n";
+  std::vector<std::string> warnings;
+  const std::string png = render_plot(dir, "bad.gp", "bad.png", warnings);
+  EXPECT_EQ(png, "");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_FALSE(fs::exists(dir + "/bad.png"));
+  EXPECT_FALSE(fs::exists(dir + "/bad.png.tmp"));
+}
+
+TEST(MetricDisplay, UsesTheMetricsDisplayUnit) {
+  EXPECT_EQ(metric_display("min_stiffness", 2.61e7), "26.1 MN/m");
+  EXPECT_EQ(metric_display("contact_ratio", 1.5), "1.5");
+  EXPECT_EQ(metric_display("supports_per_metre", 0.5), "0.5 1/m");
+  EXPECT_EQ(metric_display("wear_life_at_R(0.9)", 31557600.0 * 2), "2 yr");
+  DesignVariable v = variable("pinion.pressure_angle", QuantityKind::kAngle, "deg", 0.2, 0.4);
+  EXPECT_EQ(variable_display(v, 20.0 * std::numbers::pi / 180.0), "20 deg");
+  DesignVariable z = variable("pinion.teeth", QuantityKind::kCount, "", 12, 30);
+  EXPECT_EQ(variable_display(z, 17.0), "17");
+}
+
+}  // namespace
