@@ -128,9 +128,21 @@ TEST(Settings, MessagesSayWhatIsWrongAndWhatToUse) {
   EXPECT_NE(mma.find("LD_SLSQP"), std::string::npos);
   EXPECT_EQ(mma.find("LD_CCSAQ"), std::string::npos);  // cannot do equalities either
 
-  const std::string auglag = rs::check_solver_settings(nlopt_settings("AUGLAG"), p);
-  EXPECT_NE(auglag.find("AUGLAG needs local_algorithm"), std::string::npos) << auglag;
-  EXPECT_NE(auglag.find("LN_BOBYQA"), std::string::npos);
+  // A bad sub-solver is refused with the list of good ones (an empty one
+  // means LN_COBYLA, see SubSolverDefaultsDoNotCrash).
+  EXPECT_EQ(rs::check_solver_settings(nlopt_settings("AUGLAG"), p), "");
+  for (const char* bad : {"GN_DIRECT_L", "AUGLAG", "LN_AUGLAG", "GN_MLSL", "LN_FOO"}) {
+    rs::SolverSettings auglag = nlopt_settings("AUGLAG");
+    auglag.local_algorithm = bad;
+    const std::string msg = rs::check_solver_settings(auglag, p);
+    EXPECT_NE(msg.find(std::string("local_algorithm '") + bad + "' is not a local NLopt algorithm"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("LN_BOBYQA"), std::string::npos) << msg;
+    EXPECT_THROW(rs::minimize(p, std::vector<double>{0.2, 0.2}, auglag), std::invalid_argument);
+  }
+  rs::SolverSettings cobyla_with_local = nlopt_settings("LN_COBYLA");
+  cobyla_with_local.local_algorithm = "LN_BOBYQA";
+  EXPECT_NE(rs::check_solver_settings(cobyla_with_local, p).find("does not take one"), std::string::npos);
 
   const std::string unknown = rs::check_solver_settings(nlopt_settings("LN_FOO"), p);
   EXPECT_NE(unknown.find("unknown NLopt algorithm 'LN_FOO'"), std::string::npos) << unknown;
@@ -177,14 +189,40 @@ TEST(Settings, MessagesSayWhatIsWrongAndWhatToUse) {
 }
 
 TEST(Settings, SubSolverDefaultsDoNotCrash) {
-  // NLopt 2.7.1 segfaults in LN_AUGLAG and MLSL when no local optimizer is
-  // set; the adapter sets NLopt's documented defaults itself.
+  // NLopt 2.7.1 segfaults in LN_/LD_AUGLAG(_EQ) and every MLSL variant when
+  // no local optimizer is set, and the generic AUGLAG/AUGLAG_EQ/G_MLSL(_LDS)
+  // throw; the adapter always sets one (LN_COBYLA / LD_MMA unless given).
+  // A crash here kills the whole test binary, which is the point.
   const auto p = shifted_quadratic();
-  for (const char* alg : {"LN_AUGLAG", "LD_AUGLAG_EQ", "GN_MLSL", "GN_MLSL_LDS"}) {
+  for (const char* alg : {"LN_AUGLAG", "LD_AUGLAG_EQ", "GN_MLSL", "GN_MLSL_LDS", "GD_MLSL", "G_MLSL", "G_MLSL_LDS",
+                          "AUGLAG", "AUGLAG_EQ"}) {
     SCOPED_TRACE(alg);
     const rs::SolverResult r = rs::minimize(p, std::vector<double>{0, 0, 0, 0}, nlopt_settings(alg, 400));
     EXPECT_TRUE(r.feasible);
     EXPECT_LE(r.evaluations, 400u);
     EXPECT_LT(r.evaluation.objectives[0], 0.1);  // start: sum w c^2 = 0.09+2.88+3.125+1.47 = 7.565
   }
+  // With constraints, where the generic AUGLAGs matter: min x^2+y^2 s.t.
+  // x + y >= 1 (AUGLAG) or = 1 (AUGLAG_EQ), both at (0.5, 0.5), f = 0.5.
+  // AUGLAG_EQ passes the inequality on to its default local LN_COBYLA.
+  const auto ineq = disk_above_line();
+  const auto eq_and_ineq = LambdaProblem({-2, -2}, {2, 2},
+                                         [](std::span<const double> x) {
+                                           return ok(x[0] * x[0] + x[1] * x[1], {x[0] - 1.5}, {x[0] + x[1] - 1});
+                                         },
+                                         1, 1);
+  for (const char* alg : {"AUGLAG", "AUGLAG_EQ"})
+    for (const rs::Problem* q : {static_cast<const rs::Problem*>(&ineq), static_cast<const rs::Problem*>(&eq_and_ineq)}) {
+      SCOPED_TRACE(std::string(alg) + (q == &ineq ? " inequality" : " equality + inequality"));
+      const rs::SolverResult r = rs::minimize(*q, std::vector<double>{2.0, -1.0}, nlopt_settings(alg, 3000));
+      ASSERT_TRUE(r.feasible) << r.status;
+      EXPECT_NEAR(r.x[0], 0.5, 2e-3);
+      EXPECT_NEAR(r.x[1], 0.5, 2e-3);
+      EXPECT_LE(r.evaluations, 3000u);
+    }
+  // G_MLSL_LDS on the multimodal function: global minimum f = 0 at kShift.
+  const rs::SolverResult g = rs::minimize(multimodal(), std::vector<double>{-3, 3}, nlopt_settings("G_MLSL_LDS", 3000));
+  EXPECT_LT(g.evaluation.objectives[0], 0.5);  // inside the global basin (see multimodal())
+  EXPECT_NEAR(g.x[0], kShift[0], 1e-2);
+  EXPECT_NEAR(g.x[1], kShift[1], 1e-2);
 }

@@ -27,13 +27,21 @@ std::string describe_point(const std::vector<double>& x) {
 
 const char* halt_status(Halt h) {
   switch (h) {
-    case Halt::kBudget: return "max_evaluations";
+    case Halt::kBudget:
+    case Halt::kRequests: return "max_evaluations";
     case Halt::kTime: return "max_time";
     case Halt::kStop: return "stopped";
     case Halt::kNone:
     case Halt::kError: break;
   }
   return "";
+}
+
+std::size_t max_point_requests(const SolverSettings& settings) {
+  constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
+  const std::size_t n = settings.max_evaluations;
+  if (n > (kMax - 1000) / 10) return kMax;
+  return 10 * n + 1000;
 }
 
 EvaluationTracker::EvaluationTracker(const Problem& problem, const SolverSettings& settings,
@@ -47,7 +55,8 @@ EvaluationTracker::EvaluationTracker(const Problem& problem, const SolverSetting
       lower_(problem.lower_bounds()),
       upper_(problem.upper_bounds()),
       x0_(std::move(x0_clamped)),
-      started_(std::chrono::steady_clock::now()) {}
+      started_(std::chrono::steady_clock::now()),
+      request_cap_(max_point_requests(settings)) {}
 
 void EvaluationTracker::begin_start(int start) {
   start_ = start;
@@ -101,11 +110,28 @@ Evaluation EvaluationTracker::at(const double* x_in, bool gradient_probe) {
   std::vector<double> x(x_in, x_in + n_);
   // Models never see a point outside the box (NEWUOA and PRAXIS may step out,
   // Ipopt relaxes bounds by 1e-8 relative).
-  for (std::size_t i = 0; i < n_; ++i) x[i] = std::clamp(x[i], lower_[i], upper_[i]);
-  if (auto hit = memo_.find(x); hit != memo_.end()) return hit->second;
+  bool finite = true;  // no NaN (an infinite coordinate just clamps to its bound)
+  for (std::size_t i = 0; i < n_; ++i) {
+    finite = finite && !std::isnan(x[i]);
+    x[i] = std::clamp(x[i], lower_[i], upper_[i]);
+  }
 
+  // Checked before the memo: a solver cycling on memoized points must still
+  // see the stop request, the clock and a hard cap (docs/solvers.md, "Budget").
   if (halt_ != Halt::kNone) throw RunHalted{halt_ == Halt::kError ? Halt::kStop : halt_};
   poll();
+  if (requests_ >= request_cap_) throw RunHalted{Halt::kRequests};
+  ++requests_;
+  if (!finite) {
+    // A solver that lost its way (NaN step): never hand NaN to the model;
+    // the failure steers the solver back like any failed design.
+    Evaluation e;
+    e.status = EvaluationStatus::kFailed;
+    e.message = "the solver proposed a point with a NaN coordinate (not evaluated)";
+    return e;
+  }
+  if (auto hit = memo_.find(x); hit != memo_.end()) return hit->second;
+
   if (evaluations_ >= settings_.max_evaluations) throw RunHalted{Halt::kBudget};
 
   const auto t0 = std::chrono::steady_clock::now();
@@ -205,24 +231,31 @@ const Jacobian& EvaluationTracker::jacobian(const double* x_in) {
   jac.center_ok = stacked(at(xc.data()), center);
   if (jac.center_ok) {
     std::vector<double> probe = xc;
-    // Evaluates the stacked vector at xc + s*e_i; returns the step actually
-    // taken (rounding) or 0 when the probe failed.
+    // Evaluates the stacked vector at xc + s*e_i clamped into the box;
+    // returns the step actually taken (after rounding and clamping) or 0
+    // when the probe failed or did not move x (no information).
     auto take = [&](std::size_t i, double s, std::vector<double>& out) -> double {
-      probe[i] = xc[i] + s;
+      probe[i] = std::clamp(xc[i] + s, lower_[i], upper_[i]);
       const double actual = probe[i] - xc[i];
-      const bool ok = stacked(at(probe.data(), true), out);
+      const bool ok = actual != 0.0 && stacked(at(probe.data(), true), out);
       probe[i] = xc[i];
       return ok ? actual : 0.0;
     };
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
     for (std::size_t i = 0; i < n_; ++i) {
-      const double h = settings_.gradient_step * (upper_[i] - lower_[i]);
+      const double range = upper_[i] - lower_[i];
+      // A step below ~16 ulp of |x| is rounding noise or rounds to no step
+      // at all (a variable with a tiny range far from 0); at most half the
+      // range, so the side with more room always fits.
+      const double magnitude = std::max({std::abs(xc[i]), std::abs(lower_[i]), std::abs(upper_[i])});
+      const double h = std::min(std::max(settings_.gradient_step * range, 16.0 * kEps * magnitude), 0.5 * range);
       const bool plus_inside = xc[i] + h <= upper_[i];
       const bool minus_inside = xc[i] - h >= lower_[i];
       double hp = 0, hm = 0;
       if (settings_.central_differences && plus_inside && minus_inside) {
         hp = take(i, h, plus);
         hm = take(i, -h, minus);
-      } else {
+      } else if (plus_inside || minus_inside) {
         // Forward difference, flipped inward at the upper bound; if the
         // probe fails, the other side (when inside the box) is tried.
         if (plus_inside) {
@@ -232,6 +265,12 @@ const Jacobian& EvaluationTracker::jacobian(const double* x_in) {
           hm = take(i, -h, minus);
           if (hm == 0 && plus_inside) hp = take(i, h, plus);
         }
+      } else if (upper_[i] - xc[i] >= xc[i] - lower_[i]) {
+        // Rounding left neither side a full step: go to the farther bound
+        // (at least half the range away).
+        hp = take(i, upper_[i] - xc[i], plus);
+      } else {
+        hm = take(i, lower_[i] - xc[i], minus);
       }
       for (std::size_t r = 0; r < rows; ++r) {
         double d = 0.0;  // both sides failed: no information, report a flat slope

@@ -22,7 +22,16 @@
 namespace rackopt::solvers::detail {
 
 // Why a run was ended by the adapter (not by the solver's own tests).
-enum class Halt { kNone, kBudget, kTime, kStop, kError };
+// kRequests: the solver asked for more points than max_point_requests(),
+// i.e. it kept revisiting points answered from the memo (COBYLA cycling on
+// an infeasible sub-problem); reported as status "max_evaluations".
+enum class Halt { kNone, kBudget, kTime, kStop, kError, kRequests };
+
+// Hard cap on the points a solver may ask for in one run, memo hits
+// included: 10 * max_evaluations + 1000 (saturating). Generous for every
+// solver that makes progress (SLSQP/Ipopt ask for the same x 2-4 times per
+// iterate), small enough that a cycling solver ends in milliseconds.
+std::size_t max_point_requests(const SolverSettings& settings);
 
 // Status string of SolverResult for a halt reason ("" for kNone/kError).
 const char* halt_status(Halt h);
@@ -66,9 +75,15 @@ class EvaluationTracker {
   // of Problem::evaluate per distinct x in the whole run (memo of up to
   // kMemoLimit points; solvers do revisit old points, e.g. COBYLA and Ipopt
   // at the end of a run).
-  // Throws RunHalted when the budget, the time or a stop request ends the
-  // run; lets anything evaluate() or the observer threw pass unchanged.
+  // Every call, memo hits included, polls the stop request and the clock
+  // and counts against max_point_requests(): a solver that only revisits
+  // old points still ends.
+  // Throws RunHalted when the budget, the time, the request cap or a stop
+  // request ends the run; lets anything evaluate() or the observer threw
+  // pass unchanged.
   Evaluation at(const double* x, bool gradient_probe = false);
+  // Points asked for so far (memo hits included), over the whole run.
+  std::size_t point_requests() const { return requests_; }
 
   // Finite-difference Jacobian at x (see Jacobian); probes go through at()
   // with gradient_probe = true. Cached for the last center.
@@ -134,6 +149,7 @@ class EvaluationTracker {
   std::string start_point_message_;
 
   std::size_t evaluations_ = 0, failed_ = 0, probes_ = 0, ok_evaluations_ = 0;
+  std::size_t requests_ = 0, request_cap_ = 0;
   std::vector<double> best_history_;
   bool has_feasible_ = false, has_ok_ = false, has_x0_evaluation_ = false;
   std::vector<double> best_x_, least_infeasible_x_;

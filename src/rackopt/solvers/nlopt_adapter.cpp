@@ -12,7 +12,9 @@
 //    (failed evaluations become penalty values);
 //  * AUGLAG without a local optimizer throws, and LN_/LD_AUGLAG(_EQ) and all
 //    MLSL variants without one SEGFAULT in 2.7.1 (nlopt_set_xtol_abs on the
-//    default sub-optimizer): we always set the local optimizer ourselves;
+//    default sub-optimizer): we always set the local optimizer ourselves
+//    (local_algorithm, else LD_MMA for LD_/GD_ variants, LN_COBYLA for the
+//    rest, the generic AUGLAG/AUGLAG_EQ/G_MLSL/G_MLSL_LDS included);
 //  * nlopt::srand is thread-local: seeded right here, in the solver thread,
 //    before every start.
 #include <nlopt.hpp>
@@ -137,8 +139,8 @@ const std::vector<NloptAlgorithmInfo>& nlopt_algorithm_table() {
       {"LD_AUGLAG", nlopt::LD_AUGLAG, true, true, LS::kOptional, true, false, "augmented Lagrangian, local LD_MMA unless given"},
       {"LN_AUGLAG_EQ", nlopt::LN_AUGLAG_EQ, true, true, LS::kOptional, false, false, "penalizes equalities only, local LN_COBYLA unless given"},
       {"LD_AUGLAG_EQ", nlopt::LD_AUGLAG_EQ, true, true, LS::kOptional, true, false, "penalizes equalities only, local LD_MMA unless given"},
-      {"AUGLAG", nlopt::AUGLAG, true, true, LS::kRequired, false, false, "augmented Lagrangian around local_algorithm"},
-      {"AUGLAG_EQ", nlopt::AUGLAG_EQ, true, true, LS::kRequired, false, false, "penalizes equalities only; local_algorithm gets the inequalities"},
+      {"AUGLAG", nlopt::AUGLAG, true, true, LS::kOptional, false, false, "augmented Lagrangian around local_algorithm, LN_COBYLA unless given"},
+      {"AUGLAG_EQ", nlopt::AUGLAG_EQ, true, true, LS::kOptional, false, false, "penalizes equalities only; local_algorithm (LN_COBYLA unless given) gets the inequalities"},
       {"GN_DIRECT", nlopt::GN_DIRECT, false, false, LS::kNone, false, true, "dividing rectangles"},
       {"GN_DIRECT_L", nlopt::GN_DIRECT_L, false, false, LS::kNone, false, true, "locally biased DIRECT"},
       {"GN_DIRECT_L_RAND", nlopt::GN_DIRECT_L_RAND, false, false, LS::kNone, false, true, "randomized DIRECT-L (seeded)"},
@@ -157,8 +159,8 @@ const std::vector<NloptAlgorithmInfo>& nlopt_algorithm_table() {
       {"GD_MLSL", nlopt::GD_MLSL, false, false, LS::kOptional, true, true, "multi-level single linkage, local LD_MMA unless given"},
       {"GN_MLSL_LDS", nlopt::GN_MLSL_LDS, false, false, LS::kOptional, false, true, "MLSL on a Sobol sequence, local LN_COBYLA unless given"},
       {"GD_MLSL_LDS", nlopt::GD_MLSL_LDS, false, false, LS::kOptional, true, true, "MLSL on a Sobol sequence, local LD_MMA unless given"},
-      {"G_MLSL", nlopt::G_MLSL, false, false, LS::kRequired, false, true, "MLSL around local_algorithm"},
-      {"G_MLSL_LDS", nlopt::G_MLSL_LDS, false, false, LS::kRequired, false, true, "MLSL (Sobol) around local_algorithm"},
+      {"G_MLSL", nlopt::G_MLSL, false, false, LS::kOptional, false, true, "MLSL around local_algorithm, LN_COBYLA unless given"},
+      {"G_MLSL_LDS", nlopt::G_MLSL_LDS, false, false, LS::kOptional, false, true, "MLSL (Sobol) around local_algorithm, LN_COBYLA unless given"},
   };
   return table;
 }
@@ -201,7 +203,9 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
     if (local) {
       local_id = static_cast<nlopt::algorithm>(local->id);
     } else {
-      // NLopt's own defaults, set explicitly: leaving them to NLopt 2.7.1 crashes.
+      // NLopt's own defaults, set explicitly: leaving them to NLopt 2.7.1
+      // crashes (LN_/LD_ AUGLAG, MLSL) or throws (generic AUGLAG). LN_COBYLA
+      // for the generic ones: it accepts the inequalities AUGLAG_EQ hands on.
       local_id = algorithm.derivative ? nlopt::LD_MMA : nlopt::LN_COBYLA;
     }
     nlopt::opt sub(local_id, n);

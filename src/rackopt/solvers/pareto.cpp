@@ -240,7 +240,15 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
   auto solve = [&](const ScalarizedProblem& sub, const std::string& label,
                    std::span<const double> start) -> std::optional<ParetoPoint> {
     SolverCallbacks cb;
-    cb.stop = callbacks.stop;
+    // Whether the request fired is remembered here: the sub-solve's status
+    // ranks no_feasible_point / all_failed above "stopped", and a stop during
+    // an infeasible sub-problem must still end the whole front.
+    if (callbacks.stop)
+      cb.stop = [&] {
+        if (!callbacks.stop()) return false;
+        stopped = true;
+        return true;
+      };
     if (callbacks.observer)
       cb.observer = [&](const EvaluationRecord& rec) {
         EvaluationRecord out = rec;

@@ -77,7 +77,7 @@ struct EvaluationRecord {
 };
 using EvaluationObserver = std::function<void(const EvaluationRecord&)>;
 
-// Polled between evaluations; returning true stops the run cleanly (the
+// Polled before every point a solver asks for (memo hits included); returning true stops the run cleanly (the
 // result then holds the best point so far, status "stopped").
 using StopRequest = std::function<bool()>;
 

@@ -225,6 +225,11 @@ SolverResult minimize(const Problem& problem, std::span<const double> x0, const 
     if (outcomes.size() > 1) result.solver_message += (s ? "; start " : "start ") + std::to_string(s) + ": ";
     result.solver_message += outcomes[s].message;
   }
+  if (tracker.halt() == detail::Halt::kRequests)
+    result.solver_message += "; ended by the adapter: the solver asked for " +
+                             std::to_string(tracker.point_requests()) + " points (cap 10 * max_evaluations + 1000) but " +
+                             std::to_string(result.evaluations) +
+                             " were new; it kept revisiting evaluated points (cycling)";
 
   if (result.evaluations > 0 && !tracker.any_ok()) {
     result.status = "all_failed";

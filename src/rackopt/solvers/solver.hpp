@@ -21,20 +21,37 @@ namespace rackopt::solvers {
 struct SolverSettings {
   std::string library = "nlopt";        // "nlopt" | "ipopt" (case-insensitive)
   std::string algorithm = "LN_COBYLA";  // NLopt name, NLOPT_ prefix optional, case-insensitive; ignored for ipopt
-  // Sub-solver of AUGLAG/AUGLAG_EQ/G_MLSL/G_MLSL_LDS (required there) and of
-  // LN_/LD_AUGLAG(_EQ), GN_/GD_MLSL(_LDS) (optional: LN_COBYLA / LD_MMA by default).
+  // Sub-solver of the AUGLAG and MLSL variants (AUGLAG, AUGLAG_EQ, G_MLSL,
+  // G_MLSL_LDS, LN_/LD_AUGLAG(_EQ), GN_/GD_MLSL(_LDS)); empty = LD_MMA for the
+  // LD_/GD_ ones, LN_COBYLA for the others. The adapter always sets one:
+  // NLopt 2.7.1 segfaults or throws without it. Must be a local LN_/LD_
+  // algorithm (check_solver_settings says which); other algorithms refuse it.
   std::string local_algorithm;
   double xtol_rel = 1e-6, xtol_abs = 0, ftol_rel = 1e-10, ftol_abs = 0;
   // Budget on model evaluations INCLUDING finite-difference probes, enforced
   // by the adapter: evaluate() is called at most this many times in total.
+  // Points a solver asks for again are answered from a memo without a model
+  // call, but EVERY request counts against a second, hard cap of
+  // 10 * max_evaluations + 1000 requests, so a solver that cycles on old
+  // points (COBYLA on an infeasible sub-problem, CRS2 on a box corner) still
+  // ends: status "max_evaluations", solver_message says "kept revisiting
+  // evaluated points".
   std::size_t max_evaluations = 1000;
-  double max_seconds = 0;               // wall time; 0 = no limit
+  // Wall time of this run (all starts); 0 = no limit. Checked, like
+  // callbacks.stop, on every point request, memo hits included.
+  double max_seconds = 0;
   // Multistart: x0 first, then (starts-1) points of a Latin hypercube in the
   // box drawn from `seed`. All starts share one budget.
   int starts = 1;
   std::uint64_t seed = 1;               // stochastic algorithms and multistart points; same seed => same result
   double constraint_tolerance = 1e-6;   // our own feasibility re-check of every candidate
-  double gradient_step = 1e-6;          // finite-difference step relative to (upper-lower) of each variable
+  // Finite-difference step h_i = gradient_step * (upper_i - lower_i), at
+  // least 16 ulp of |x_i| and at most half the range; probes never leave the
+  // box (one-sided next to a bound).
+  double gradient_step = 1e-6;
+  // Central differences (2n probes instead of n) remove the O(h) gradient
+  // bias; use them with Ipopt and whenever the optimum must be accurate to
+  // better than ~1e-3 (docs/solvers.md, "Finite differences").
   bool central_differences = false;
   double ipopt_tol = 1e-8;
   int ipopt_max_iterations = 3000;
@@ -43,7 +60,7 @@ struct SolverSettings {
 
 struct SolverCallbacks {
   EvaluationObserver observer;  // every evaluation, in order (may be empty)
-  StopRequest stop;             // polled before every evaluation (may be empty)
+  StopRequest stop;             // polled on every point request, memo hits included (may be empty)
 };
 
 struct SolverResult {
@@ -56,7 +73,7 @@ struct SolverResult {
   // Why the run ended, most important first:
   //   "all_failed"        every evaluation failed (evaluation.message says why)
   //   "no_feasible_point" evaluations succeeded but none was feasible
-  //   "max_evaluations" | "max_time" | "stopped"   budget / time / stop request hit
+  //   "max_evaluations" | "max_time" | "stopped"   budget (or the request cap) / time / stop request hit
   //   "converged"         the solver ended by its own convergence test
   //   "max_iterations"    Ipopt reached ipopt_max_iterations
   //   "solver_failed"     the solver gave up (NLopt FAILURE, Ipopt restoration failure, ...);
