@@ -1,0 +1,167 @@
+// study_fingerprint: FNV-1a 64 over a canonical text of the study. Doubles are
+// written in hex-float (%a) so that two specs that differ in the last bit get
+// different fingerprints and the same spec always gives the same text. The
+// problem enters as its tree after variant and overrides, without marks, so
+// comments and layout of the problem file do not matter, its values do.
+#include <cinttypes>
+#include <cstdio>
+#include <string>
+
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/study/study_spec.hpp"
+
+namespace rackopt::study {
+
+namespace {
+
+class Canon {
+ public:
+  void key(const char* k) {
+    text_ += k;
+    text_ += '=';
+  }
+  void num(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%a;", v);
+    text_ += buf;
+  }
+  void integer(std::uint64_t v) {
+    text_ += std::to_string(v);
+    text_ += ';';
+  }
+  void str(const std::string& s) {
+    // Length-prefixed: no separator inside a string can fake another field.
+    text_ += std::to_string(s.size());
+    text_ += ':';
+    text_ += s;
+    text_ += ';';
+  }
+  void opt(const std::optional<double>& v) {
+    if (v) {
+      num(*v);
+    } else {
+      text_ += "none;";
+    }
+  }
+  void node(const MarkedNode& n) {
+    switch (n.type) {
+      case MarkedNode::Type::kNull: text_ += "~;"; break;
+      case MarkedNode::Type::kScalar: str(n.scalar); break;
+      case MarkedNode::Type::kMap:
+        text_ += '{';
+        for (const auto& e : n.entries) {
+          str(e.key);
+          node(e.value);
+        }
+        text_ += '}';
+        break;
+      case MarkedNode::Type::kSequence:
+        text_ += '[';
+        for (const auto& i : n.items) node(i);
+        text_ += ']';
+        break;
+    }
+  }
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+};
+
+}  // namespace
+
+std::string study_fingerprint(const StudySpec& spec) {
+  Canon c;
+  c.key("format");
+  c.integer(1);
+  c.key("kind");
+  c.str(kind_name(spec.kind));
+  c.key("seed");
+  c.integer(spec.seed);
+  for (const auto& v : spec.variables) {
+    c.key("variable");
+    c.str(v.key);
+    c.integer(static_cast<std::uint64_t>(v.kind));
+    c.num(v.lower);
+    c.num(v.upper);
+    c.integer(v.values.size());
+    for (double x : v.values) c.num(x);
+    c.opt(v.start);
+    c.integer(static_cast<std::uint64_t>(static_cast<std::int64_t>(v.levels)));
+  }
+  for (const auto& o : spec.objectives) {
+    c.key("objective");
+    c.str(metrics::to_string(o.metric));
+    c.integer(o.maximize ? 1 : 0);
+    c.num(o.scale);
+  }
+  for (const auto& k : spec.constraints) {
+    c.key("constraint");
+    c.str(metrics::to_string(k.metric));
+    c.opt(k.min);
+    c.opt(k.max);
+    c.opt(k.equals);
+    c.num(k.scale);
+  }
+  for (const auto& r : spec.report_metrics) {
+    c.key("report_metric");
+    c.str(metrics::to_string(r));
+  }
+  const metrics::MetricOptions& m = spec.metric_options;
+  c.key("metric_options");
+  for (double v : {m.load_factors.application, m.load_factors.dynamic, m.load_factors.face_bending,
+                   m.load_factors.transverse_bending, m.load_factors.face_contact, m.load_factors.transverse_contact,
+                   m.allowable_bending_pinion, m.allowable_bending_rack, m.allowable_contact_pinion,
+                   m.allowable_contact_rack, m.rack_root_radius})
+    c.num(v);
+  c.integer(m.exact_quantile ? 1 : 0);
+  c.integer(static_cast<std::uint64_t>(m.reliability_samples));
+  c.integer(static_cast<std::uint64_t>(m.reliability_seed));
+  c.integer(static_cast<std::uint64_t>(m.bootstrap_replicates));
+  // threads: results do not depend on it.
+
+  auto solver = [&](const solvers::SolverSettings& s) {
+    // max_evaluations and max_seconds left out: a study may be resumed with a
+    // bigger budget. ipopt_print_level only changes console output.
+    c.str(s.library);
+    c.str(s.algorithm);
+    c.str(s.local_algorithm);
+    for (double v : {s.xtol_rel, s.xtol_abs, s.ftol_rel, s.ftol_abs, s.constraint_tolerance, s.gradient_step,
+                     s.ipopt_tol})
+      c.num(v);
+    c.integer(static_cast<std::uint64_t>(s.starts));
+    c.integer(s.seed);
+    c.integer(s.central_differences ? 1 : 0);
+    c.integer(static_cast<std::uint64_t>(s.ipopt_max_iterations));
+  };
+  c.key("solver");
+  solver(spec.solver);
+  c.key("pareto");
+  c.integer(static_cast<std::uint64_t>(spec.pareto.method));
+  c.integer(spec.pareto.points);
+  c.integer(spec.pareto.primary);
+  c.num(spec.pareto.duplicate_tolerance);
+  c.key("choose_weights");
+  for (double w : spec.choose_weights) c.num(w);
+  c.key("sweep");
+  c.integer(static_cast<std::uint64_t>(spec.sweep.method));
+  c.integer(static_cast<std::uint64_t>(static_cast<std::int64_t>(spec.sweep.levels)));
+  c.integer(spec.sweep.points);
+
+  c.key("problem");
+  const ProblemTree tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
+  c.str(tree.variant);
+  c.node(tree.root);
+
+  // FNV-1a 64.
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char ch : c.text()) {
+    h ^= ch;
+    h *= 1099511628211ull;
+  }
+  char out[17];
+  std::snprintf(out, sizeof out, "%016" PRIx64, h);
+  return out;
+}
+
+}  // namespace rackopt::study

@@ -1,0 +1,76 @@
+// Study specs built directly in C++ (the YAML loader is another module).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/study/study_spec.hpp"
+
+namespace rackopt::study::testing {
+
+inline const std::string kSourceDir = RACKOPT_SOURCE_DIR;
+
+// rack_railway with a coarser travel sampling: the tests compare the study
+// layer against itself (sweep vs optimizer on the same model), so the
+// resolution of the curve does not matter, only its cost.
+inline StudySpec railway_spec(StudyKind kind) {
+  StudySpec s;
+  s.name = "test";
+  s.file = "test_study.yaml";
+  s.kind = kind;
+  s.seed = 7;
+  s.problem_path = kSourceDir + "/problems/rack_railway.yaml";
+  s.problem_overrides = {"numerics.positions_per_period=24"};
+  return s;
+}
+
+inline DesignVariable continuous(const std::string& key, double lower, double upper,
+                                 std::optional<double> start = std::nullopt) {
+  DesignVariable v;
+  v.key = key;
+  v.kind = *problem_key_kind(key);
+  v.lower = lower;
+  v.upper = upper;
+  v.start = start;
+  return v;
+}
+
+inline DesignVariable discrete(const std::string& key, std::vector<double> values) {
+  DesignVariable v;
+  v.key = key;
+  v.kind = *problem_key_kind(key);
+  v.values = values;
+  v.lower = values.front();
+  v.upper = values.back();
+  return v;
+}
+
+inline ObjectiveSpec objective(const std::string& text, bool maximize = false) {
+  ObjectiveSpec o;
+  o.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  o.label = metrics::to_string(o.metric);
+  o.maximize = maximize;
+  return o;
+}
+
+inline ConstraintSpec constraint(const std::string& text, std::optional<double> min, std::optional<double> max = {}) {
+  ConstraintSpec c;
+  c.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  c.label = metrics::to_string(c.metric);
+  c.min = min;
+  c.max = max;
+  return c;
+}
+
+// A fresh, empty folder for one test's results.
+inline std::string fresh_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_study_test_" + name);
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+}  // namespace rackopt::study::testing
