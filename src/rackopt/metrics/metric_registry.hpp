@@ -57,8 +57,8 @@ std::string_view model_name(Model m);
 enum class Requirement : std::uint8_t {
   kWear = 1,               // problem `wear` section (wear.coefficient > 0)
   kDuty = 2,               // duty.rack_meshes_per_year > 0 (lives in seconds)
-  kAllowableBending = 4,   // MetricOptions::allowable_bending_pinion > 0
-  kAllowableContact = 8,   // MetricOptions::allowable_contact_pinion > 0
+  kAllowableBending = 4,   // sigma_FP of both members: materials.<name>.allowable_bending (or MetricOptions)
+  kAllowableContact = 8,   // sigma_HP of both members: materials.<name>.allowable_contact (or MetricOptions)
 };
 
 // How a metric uses its parameter.
