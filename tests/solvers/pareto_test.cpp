@@ -178,9 +178,9 @@ TEST(Pareto, ThreeObjectivesTriangle) {
         return ok_multi(f);
       },
       0, 0, 3);
-  // Weighted sum only: with eps-constraint the low grid cells (f_j1, f_j2 <= 0.2)
-  // are infeasible here and LN_COBYLA then cycles inside NLopt on memoized
-  // points without ever reaching the budget (reported to the integrator).
+  // Weighted sum here; the eps-constraint run, whose low grid cells are
+  // infeasible and made LN_COBYLA cycle forever before the adapter's request
+  // cap, is Termination.ThreeObjectiveEpsConstraintFrontEnds (under a watchdog).
   for (rs::Scalarization method : {rs::Scalarization::kWeightedSum}) {
     rs::ParetoSettings s = settings(method, "LN_COBYLA", 19);
     const rs::ParetoResult r = rs::pareto_front(p, std::vector<double>{0.4, 0.3}, s);

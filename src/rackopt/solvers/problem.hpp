@@ -77,8 +77,9 @@ struct EvaluationRecord {
 };
 using EvaluationObserver = std::function<void(const EvaluationRecord&)>;
 
-// Polled before every point a solver asks for (memo hits included); returning true stops the run cleanly (the
-// result then holds the best point so far, status "stopped").
+// Polled before every point a solver asks for (memo hits included);
+// returning true stops the run cleanly (the result then holds the best point
+// so far, status "stopped").
 using StopRequest = std::function<bool()>;
 
 }  // namespace rackopt::solvers
