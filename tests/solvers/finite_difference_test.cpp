@@ -96,7 +96,8 @@ TEST(FiniteDifferences, TinyRangeFarFromZeroStillMovesX) {
     rs::SolverSettings s;
     s.gradient_step = 1e-7;
     s.central_differences = central;
-    rd::EvaluationTracker t(p, s, {}, {xc});
+    const rs::SolverCallbacks none;  // the tracker keeps references: no temporaries
+    rd::EvaluationTracker t(p, s, none, {xc});
     const rd::Jacobian& j = t.jacobian(&xc);
     EXPECT_NEAR(j.values[0], 2 * (xc - c), 1e-6) << (central ? "central" : "forward");  // -4e-3
   }
@@ -115,8 +116,9 @@ TEST(FiniteDifferences, NaNPointIsNeverEvaluated) {
     ++calls;
     return ok(x[0]);
   });
-  rs::SolverSettings s;
-  rd::EvaluationTracker t(p, s, {}, {0.5});
+  const rs::SolverSettings s;
+  const rs::SolverCallbacks none;
+  rd::EvaluationTracker t(p, s, none, {0.5});
   const double bad = std::numeric_limits<double>::quiet_NaN();
   const rs::Evaluation e = t.at(&bad);
   EXPECT_FALSE(e.ok());
