@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/output/plot.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -484,6 +485,38 @@ TEST(StudyReport, OutputSwitchesTurnPlotsAndReportOff) {
   EXPECT_FALSE(fs::exists(dir + "/history.gp"));
   EXPECT_TRUE(fs::exists(dir + "/summary.json"));
   for (const auto& w : rep.written) EXPECT_TRUE(fs::exists(w)) << w;
+}
+
+TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
+  StudySpec spec;
+  spec.name = "ship lift reliability";
+  spec.kind = StudyKind::kReliability;
+  spec.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml";
+  auto drive = std::make_shared<const Drive>(load_problem(spec.problem_path));
+  WearReliabilityOptions opt;
+  opt.samples = 100;
+  opt.threads = 1;
+  auto wr = std::make_shared<const WearReliabilityResult>(run_wear_reliability(*drive, opt));
+  StudyResult r;
+  r.status = "ok";
+  r.evaluations = 1;
+  r.best_drive = drive;
+  r.reliability = wr;
+  r.best = DesignResult{};
+  r.best->ok = r.best->feasible = true;
+  r.best->label = "design";
+  const std::string dir = tmp_dir("reliability");
+  const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
+  for (const char* role : {"wear_profile_csv", "life_samples_csv", "reliability_csv", "life_histogram_csv"}) {
+    ASSERT_TRUE(j["files"].contains(role)) << role;
+    EXPECT_TRUE(fs::exists(j["files"][role].get<std::string>())) << role;
+  }
+  // one row per Monte Carlo sample
+  EXPECT_EQ(read_csv(dir + "/life_samples.csv").size(), wr->lives.size() + 1);
+  if (gnuplot_available()) {
+    EXPECT_TRUE(j["files"].contains("reliability_png"));
+  }
+  expect_links_exist(dir);
 }
 
 TEST(RenderPlot, FailingScriptLeavesNoImageAndWarns) {
