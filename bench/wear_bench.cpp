@@ -137,6 +137,8 @@ void BM_SummarizeLives(benchmark::State& state) {
 BENCHMARK(BM_SummarizeLives)
     ->ArgNames({"samples", "replicates"})
     ->Args({1000, 200})
+    ->Args({1000, 100})
+    ->Args({1000, 50})
     ->Args({1000, 20})
     ->Args({10000, 200})
     ->Unit(benchmark::kMillisecond);

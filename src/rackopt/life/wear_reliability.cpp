@@ -4,18 +4,41 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <thread>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/reliability/distribution.hpp"
+#include "rackopt/reliability/function_table.hpp"
 #include "rackopt/reliability/sampling.hpp"
 
 namespace rackopt {
 namespace {
 
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
 double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Failure criteria as table tags (with the limiting member): the table never
+// interpolates across a change of either, i.e. across a kink of life(input).
+const char* const kCriteria[] = {"max_depth", "case_depth", "contact_ratio", "initial_contact_ratio",
+                                 "contact_ratio_above_max"};
+constexpr int kCriteriaCount = static_cast<int>(sizeof(kCriteria) / sizeof(kCriteria[0]));
+
+int criterion_tag(const WearLifeResult& r) {
+  int c = kCriteriaCount;  // unknown criterion: a tag of its own
+  for (int i = 0; i < kCriteriaCount; ++i)
+    if (r.criterion == kCriteria[i]) c = i;
+  return 2 * c + (r.limiting_member == Member::kRack ? 0 : 1);
+}
+
+std::string criterion_of_tag(int tag) {
+  const int c = tag / 2;
+  return c < kCriteriaCount ? kCriteria[c] : std::string("other");
 }
 
 double nominal_surface_hardness(const Drive& d) {
@@ -84,13 +107,87 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
   out.threads_used = threads;
   out.criteria.assign(n, std::string());
+
+  auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
+
+  // One input: the probabilities [qa, qb] of the inputs that do not fail at
+  // once. A sampled contact ratio outside [max(1, [eps]), eps_max] fails at
+  // once (life 0): R(t) and the life at R count it as failed at t = 0
+  // (seed 004's R = P([eps] <= eps <= eps_max)).
+  double qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
+  if (dim == 1 && inputs[0].key == "contact_ratio") {
+    xa = std::max(1.0, drive.wear.min_contact_ratio);
+    xb = model.max_contact_ratio();
+    qa = dist[0].cdf(xa);
+    qb = dist[0].cdf(xb);
+  }
+
+  // The life table (one input): nodes over the [1e-9, 1 - 1e-9] quantiles
+  // of the input (clipped to [xa, xb]), so that it serves the samples and the
+  // exact map and does not depend on the samples drawn.
   t0 = std::chrono::steady_clock::now();
+  std::optional<reliability::FunctionTable> table;
+  LifeTableReport& tr = out.table;
+  if (dim != 1) {
+    tr.not_used = "several random inputs: one model life per sample";
+  } else if (!opt.life_table) {
+    tr.not_used = "life_table option off";
+  } else {
+    constexpr double kTail = 1e-9;
+    const double ql = std::max(qa, kTail), qh = std::min(qb, 1.0 - kTail);
+    const double lo = std::max(xa, dist[0].quantile(ql)), hi = std::min(xb, dist[0].quantile(qh));
+    if (!(qh > ql) || !(hi > lo)) {
+      tr.not_used = "almost every sample fails at once";
+    } else {
+      reliability::FunctionTableOptions to;
+      to.initial_nodes = opt.life_table_nodes;
+      to.rel_tolerance = opt.life_table_tolerance;
+      to.max_evaluations = opt.life_table_max_evaluations;
+      to.threads = threads;
+      try {
+        table = reliability::FunctionTable::build(
+            [&](double x) {
+              const WearLifeResult r = life_of(x);
+              return reliability::TaggedValue{r.life_years, criterion_tag(r)};
+            },
+            lo, hi, to);
+      } catch (const InputError& e) {
+        tr.not_used = std::string("the model rejected a table node: ") + e.what();
+      } catch (const DesignError& e) {
+        tr.not_used = std::string("the model failed at a table node: ") + e.what();
+      }
+      if (table) {
+        tr.used = true;
+        tr.x_min = lo;
+        tr.x_max = hi;
+        tr.nodes = static_cast<int>(table->x().size());
+        tr.evaluations = table->evaluations();
+        tr.max_check_error = table->max_check_error();
+        tr.uncovered_fraction = table->uncovered_fraction();
+        tr.breaks = table->breaks();
+      }
+    }
+  }
+
+  std::atomic<std::size_t> interpolated{0};
   out.lives = reliability::evaluate_samples(n, threads, [&](std::size_t i) {
-    const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]));
-    out.criteria[i] = r.criterion;  // each index written by one thread only
+    double years;
+    const double x = out.input_values[i][0];
+    if (table && table->covers(x)) {
+      const reliability::TaggedValue v = *(*table)(x);
+      years = v.value;
+      out.criteria[i] = criterion_of_tag(v.tag);  // each index written by one thread only
+      interpolated.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]));
+      out.criteria[i] = r.criterion;
+      years = r.life_years;
+    }
     if (opt.progress) opt.progress->tick();
-    return r.life_years * kSecondsPerYear;
+    return years * kSecondsPerYear;
   });
+  tr.samples_interpolated = table ? interpolated.load() : 0;
+  tr.samples_direct = n - tr.samples_interpolated;
   out.samples_ms = ms_since(t0);
 
   t0 = std::chrono::steady_clock::now();
@@ -105,55 +202,102 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   // Exact results for one monotone input (issue 3: "the life at R is exact
   // from that input's quantile").
+  const auto t_exact = std::chrono::steady_clock::now();
   if (dim == 1) {
     const reliability::Distribution& d0 = dist[0];
-    auto life_at_q = [&](double q) {
-      return model.life(wear_sample_for(drive, inputs, {d0.quantile(q)})).life_years;
-    };
-    // A sampled contact ratio outside [max(1, [eps]), eps_max] fails at once
-    // (life 0): the life is monotone only on the probabilities [qa, qb]
-    // between those bounds, and R(t) and the life at R count the rest as
-    // failed at t = 0 (seed 004's R = P([eps] <= eps <= eps_max)).
-    double qa = 0.0, qb = 1.0;
-    if (inputs[0].key == "contact_ratio") {
-      qa = d0.cdf(std::max(1.0, drive.wear.min_contact_ratio));
-      qb = d0.cdf(model.max_contact_ratio());
-    }
+    auto life_at_q = [&](double q) { return life_of(d0.quantile(q)).life_years; };
     ExactReliability& ex = out.exact;
     ex.available = true;
     ex.input = inputs[0].key;
     ex.failed_at_start = qa + (1.0 - qb);
     if (qb - qa > 1e-12) {
-      const double lo = life_at_q(qa + 0.25 * (qb - qa)), hi = life_at_q(qa + 0.75 * (qb - qa));
-      ex.life_increases = hi >= lo;
-      // life at R: P(life > t_R) = R. An R above the probability of starting
-      // inside the bounds cannot be reached: life 0.
+      bool increasing = true;
+      ex.monotone_verified = table && table->monotone(&increasing);
+      if (ex.monotone_verified) {
+        ex.life_increases = increasing;
+      } else {
+        const double l1 = life_at_q(qa + 0.25 * (qb - qa)), l2 = life_at_q(qa + 0.75 * (qb - qa));
+        ex.model_evaluations += 2;
+        ex.life_increases = l2 >= l1;
+      }
+      // life at R: P(life > t_R) = R, one model life at the quantile. An R
+      // above the probability of starting inside the bounds cannot be
+      // reached: life 0.
       for (double R : spec.reliabilities) {
         const double q = ex.life_increases ? qb - R : qa + R;
-        ex.life_at_R_years.push_back(q < qa || q > qb ? 0.0 : life_at_q(std::clamp(q, qa + 1e-12, qb - 1e-12)));
-      }
-      // R(t): the probability q* in [qa, qb] where the life crosses t, by
-      // bisection on q.
-      for (double t : spec.times) {
-        const double t_years = t / kSecondsPerYear;
-        double a = qa + 1e-12, b = qb - 1e-12;
-        for (int it = 0; it < 60; ++it) {
-          const double m = 0.5 * (a + b);
-          const bool below = life_at_q(m) <= t_years;  // life(q) <= t
-          if (ex.life_increases == below) {
-            a = m;
-          } else {
-            b = m;
-          }
+        if (q < qa || q > qb) {
+          ex.life_at_R_years.push_back(0.0);
+        } else {
+          ex.life_at_R_years.push_back(life_at_q(std::clamp(q, qa + 1e-12, qb - 1e-12)));
+          ++ex.model_evaluations;
         }
-        const double q = 0.5 * (a + b);
-        ex.R_at_times.push_back(std::clamp(ex.life_increases ? qb - q : q - qa, 0.0, 1.0));
       }
+      // R(t): the probability q* in [qa, qb] where the life crosses t.
+      const bool up = ex.life_increases;
+      auto R_of_q = [&](double q) { return std::clamp(up ? qb - q : q - qa, 0.0, 1.0); };
+      ex.R_at_times.assign(spec.times.size(), 0.0);
+      std::vector<int> evaluations(spec.times.size(), 0);
+      if (ex.monotone_verified) {
+        // Invert the table, then polish with two model lives (a Newton step
+        // on the table's slope, then the secant through both): the root of
+        // the model's own life, not of the interpolant.
+        const std::vector<double>& xs = table->x();
+        const std::vector<double>& ys = table->y();
+        reliability::parallel_for(spec.times.size(), threads, [&](std::size_t k) {
+          const double t = spec.times[k] / kSecondsPerYear;
+          // Outside the node values the root lies in the 1e-9 tails (or in
+          // the inputs that fail at once): R is the bound's, to 1e-9.
+          if (up ? t < ys.front() : t >= ys.front()) {
+            ex.R_at_times[k] = R_of_q(qa);
+            return;
+          }
+          if (up ? t >= ys.back() : t < ys.back()) {
+            ex.R_at_times[k] = R_of_q(qb);
+            return;
+          }
+          std::size_t j = 0;
+          while (j + 2 < ys.size() && (up ? !(t < ys[j + 1]) : !(t >= ys[j + 1]))) ++j;
+          const double xl = xs[j], xr = xs[j + 1];
+          const double x1 = table->invert_in_interval(j, t);
+          const double f1 = life_of(x1).life_years - t;
+          double root = x1;
+          int used = 1;
+          double s = table->slope(x1);
+          if (!(s != 0)) s = (ys[j + 1] - ys[j]) / (xr - xl);
+          const double x2 = std::clamp(x1 - f1 / s, xl, xr);
+          if (f1 != 0 && x2 != x1) {
+            const double f2 = life_of(x2).life_years - t;
+            ++used;
+            root = f2 != f1 ? std::clamp(x2 - f2 * (x2 - x1) / (f2 - f1), xl, xr) : x2;
+          }
+          evaluations[k] = used;
+          ex.R_at_times[k] = R_of_q(d0.cdf(root));
+        });
+      } else {
+        // Bisection on the probability, one model life per step.
+        for (std::size_t k = 0; k < spec.times.size(); ++k) {
+          const double t_years = spec.times[k] / kSecondsPerYear;
+          double a = qa + 1e-12, b = qb - 1e-12;
+          for (int it = 0; it < 60; ++it) {
+            const double m = 0.5 * (a + b);
+            const bool below = life_at_q(m) <= t_years;  // life(q) <= t
+            if (up == below) {
+              a = m;
+            } else {
+              b = m;
+            }
+          }
+          evaluations[k] = 60;
+          ex.R_at_times[k] = R_of_q(0.5 * (a + b));
+        }
+      }
+      for (int e : evaluations) ex.model_evaluations += e;
     } else {
       ex.life_at_R_years.assign(spec.reliabilities.size(), 0.0);
       ex.R_at_times.assign(spec.times.size(), 0.0);
     }
   }
+  out.exact_ms = ms_since(t_exact);
   out.fit_ms = ms_since(t0);
   return out;
 }

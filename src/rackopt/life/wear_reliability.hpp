@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rackopt/core/drive.hpp"
@@ -30,14 +31,46 @@ struct WearReliabilityOptions {
   long seed = -1;           // >= 0 overrides reliability.seed
   unsigned threads = 0;     // 0 = hardware concurrency; results do not depend on it
   ProgressBar* progress = nullptr;  // ticked once per sample
-  int bootstrap_replicates = 200;   // KS critical values and fit intervals
+  // KS critical values and fit intervals. 100 (was 200): the critical value's
+  // bootstrap sd is then 0.0015 vs 0.0010 at 200, i.e. 5 % vs 3.5 % of its
+  // value (docs/models/reliability.md, "Bootstrap replicates"); at 200 the
+  // bootstrap alone took 2x the 100 ms budget of a life-at-R run.
+  int bootstrap_replicates = 100;
+  // One random input: the lives of the samples and the exact quantile map
+  // come from a verified table of life(input) (reliability/function_table.hpp)
+  // instead of one model life per sample (docs/models/reliability.md, "Life
+  // table"). false = one direct life per sample and R(t) by bisection.
+  bool life_table = true;
+  int life_table_nodes = 9;               // initial nodes, uniform in the input
+  double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
+  int life_table_max_evaluations = 96;    // model lives the table may use
+};
+
+// How the one-input life table was used (empty when it was not).
+struct LifeTableReport {
+  bool used = false;
+  std::string not_used;            // why not (several inputs, option off, model error, ...)
+  double x_min = 0, x_max = 0;     // tabulated input range (SI): the [1e-9, 1 - 1e-9] quantiles
+                                   // clipped to the inputs that do not fail at once
+  int nodes = 0;
+  int evaluations = 0;             // model lives spent on the table (nodes + checks)
+  double max_check_error = 0;      // largest relative midpoint error accepted
+  double uncovered_fraction = 0;   // of [x_min, x_max], left to direct evaluation
+  std::vector<std::pair<double, double>> breaks;  // input brackets where the failure mode switches
+  std::size_t samples_interpolated = 0, samples_direct = 0;
 };
 
 // When the drive has exactly one random input and the life is a monotone
 // function of it, R(t) and the life at R follow exactly from that input's
-// quantiles (no sampling error); a bisection on the probability inverts R(t).
+// quantiles (no sampling error). The life at R is one model life at the
+// input's quantile. R(t) inverts life(input): with the life table, the table
+// is inverted and the root polished with two model lives (secant); without
+// it, 60 bisection steps on the probability.
 struct ExactReliability {
   bool available = false;
+  bool monotone_verified = false;       // the table's nodes are monotone (false without a table:
+                                        // monotonicity is then assumed, checked at 2 points only)
+  int model_evaluations = 0;            // model lives spent on the exact map
   std::string input;                    // the random input's key
   bool life_increases = true;           // with the input
   double failed_at_start = 0;           // probability of a sample outside [max(1, [eps]), eps_max] (life 0)
@@ -53,7 +86,10 @@ struct WearReliabilityResult {
   std::vector<std::string> criteria;            // failure criterion per sample ("" when failed to evaluate)
   reliability::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
   ExactReliability exact;
-  double nominal_ms = 0, samples_ms = 0, fit_ms = 0;
+  LifeTableReport table;
+  // samples_ms: the sample lives (with the table: building it and
+  // interpolating); fit_ms: summary + exact map, of which exact_ms the map.
+  double nominal_ms = 0, samples_ms = 0, fit_ms = 0, exact_ms = 0;
   unsigned threads_used = 1;
 };
 

@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_gamma.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -151,6 +152,37 @@ double Distribution::log_pdf(double x) const {
 }
 
 double Distribution::pdf(double x) const { return std::exp(log_pdf(x)); }
+
+void Distribution::cdf_sorted(std::span<const double> xs, std::span<double> out) const {
+  if (xs.size() != out.size()) bad("distribution", "cdf_sorted: output size differs from input size");
+  if (family_ != Family::kGamma || a_ < 2.0 || xs.empty()) {
+    for (std::size_t i = 0; i < xs.size(); ++i) out[i] = cdf(xs[i]);
+    return;
+  }
+  // Shape >= 2: the density is smooth and bounded on [0, inf), so 3-point
+  // Gauss-Legendre on gaps <= 0.1 sd errs by ~(h/sd)^7 / 2e6 of the density
+  // scale (< 1e-10 absolute per gap), and re-anchoring every 128 values
+  // bounds the sum.
+  const double sd = std::sqrt(a_) * b_, log_norm = gsl_sf_lngamma(a_) + a_ * std::log(b_);
+  auto density = [&](double x) { return x > 0 ? std::exp((a_ - 1.0) * std::log(x) - x / b_ - log_norm) : 0.0; };
+  constexpr double kNode = 0.7745966692414834;  // sqrt(3/5)
+  double F = cdf(xs[0]);
+  out[0] = F;
+  int since_anchor = 0;
+  for (std::size_t i = 1; i < xs.size(); ++i) {
+    const double h = xs[i] - xs[i - 1];
+    if (std::isnan(xs[i]) || h < 0) bad("distribution", "cdf_sorted needs ascending values");
+    if (h > 0.1 * sd || ++since_anchor >= 128) {
+      F = cdf(xs[i]);
+      since_anchor = 0;
+    } else if (h > 0) {
+      const double c = xs[i - 1] + 0.5 * h, r = 0.5 * h * kNode;
+      const double area = h / 18.0 * (5.0 * density(c - r) + 8.0 * density(c) + 5.0 * density(c + r));
+      F = std::clamp(F + area, 0.0, 1.0);
+    }
+    out[i] = F;
+  }
+}
 
 double Distribution::cdf(double x) const {
   if (std::isnan(x)) bad("distribution", "cdf of NaN");

@@ -14,6 +14,7 @@
 // checked here and never reach abort().
 #pragma once
 
+#include <span>
 #include <string>
 
 #include "rackopt/core/drive.hpp"
@@ -55,6 +56,13 @@ class Distribution {
   double log_pdf(double x) const;
   // P(X <= x), in [0, 1].
   double cdf(double x) const;
+  // cdf(x) at each value of an ascending sample, into out (same size; else
+  // InputError). Equal to cdf(x) to ~1e-10 absolute. For the gamma (shape >= 2)
+  // it integrates the density between consecutive values (3-point Gauss)
+  // from anchors computed exactly (the first value, every 128th, after any
+  // gap over 0.1 sd): ~10x cheaper than GSL's incomplete gamma per value, which
+  // dominated the KS bootstrap (docs/models/reliability.md).
+  void cdf_sorted(std::span<const double> ascending, std::span<double> out) const;
   // P(X > x) = 1 - cdf(x), computed without cancellation in the upper tail:
   // this is the reliability R(t) when X is a life.
   double survival(double x) const;

@@ -50,12 +50,14 @@ double gamma_variate(double shape, UniformStream& rng) {
 
 double ks_statistic_sorted(const Distribution& d, std::span<const double> x) {
   if (x.empty()) bad("KS statistic of an empty sample");
+  for (double v : x)
+    if (!std::isfinite(v)) bad("KS statistic of a non-finite value");
+  std::vector<double> f(x.size());
+  d.cdf_sorted(x, f);
   const double n = static_cast<double>(x.size());
   double dmax = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i])) bad("KS statistic of a non-finite value");
-    const double f = d.cdf(x[i]);
-    dmax = std::max({dmax, static_cast<double>(i + 1) / n - f, f - static_cast<double>(i) / n});
+    dmax = std::max({dmax, static_cast<double>(i + 1) / n - f[i], f[i] - static_cast<double>(i) / n});
   }
   return dmax;
 }
