@@ -2,18 +2,23 @@
 // "Accuracy and speed": one deterministic life < 1 ms, life at R from 1000
 // samples < 100 ms, one core). docs/performance.md records the figures.
 //   ./build/wear_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
-// The 10^4-sample run takes ~10 s per iteration; skip it with
+// The 10^4-sample runs without the table take ~10 s per iteration; skip them with
 //   --benchmark_filter=-'.*samples:10000.*'
+//   ./build/wear_bench --ks_table   (KS critical value vs bootstrap replicates)
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <string>
 #include <vector>
 
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/reliability/goodness_of_fit.hpp"
 #include "rackopt/reliability/reliability.hpp"
+#include "rackopt/reliability/sampling.hpp"
 #include "rackopt/wear/wear_life.hpp"
 
 namespace {
@@ -80,34 +85,49 @@ void BM_WearModelConstruction(benchmark::State& state) {
 BENCHMARK(BM_WearModelConstruction)->Unit(benchmark::kMillisecond);
 
 // The whole life-at-R run on one thread: nominal life, N sampled lives, the
-// summary (3 candidate fits, 200-replicate bootstrap KS critical values and fit
-// intervals) and the exact quantile map (~305 more lives: 60 bisection steps
-// for each of the 5 R(t) times). Counters split the wall time:
-// samples_ms (the N lives), fit_ms (summary + exact map), nominal_ms.
-// Arguments: samples, profile points (0 = the file's 240).
+// summary (3 candidate fits, parametric bootstrap for the KS critical values
+// and fit intervals) and the exact quantile map. Counters split the wall
+// time: samples_ms (the N lives; with the table: building it, ~17 model
+// lives, and interpolating), fit_ms (summary + exact map), exact_ms (the
+// map: 3 lives at R + 2 polish lives per R(t) time with the table, 305 lives
+// by bisection without), nominal_ms, and model lives spent (lives).
+// Arguments: samples, profile points (0 = the file's 240), table (1 = the
+// one-input life table, 0 = one model life per sample and bisection),
+// bootstrap replicates.
 void BM_LifeAtR(benchmark::State& state) {
   const rackopt::Drive d = ship_lift_with(state.range(1), -1);
-  const rackopt::WearReliabilityOptions opt{.samples = state.range(0), .seed = 1, .threads = 1};
-  double samples_ms = 0, fit_ms = 0, nominal_ms = 0;
+  rackopt::WearReliabilityOptions opt{.samples = state.range(0), .seed = 1, .threads = 1};
+  opt.life_table = state.range(2) != 0;
+  opt.bootstrap_replicates = static_cast<int>(state.range(3));
+  double samples_ms = 0, fit_ms = 0, nominal_ms = 0, exact_ms = 0, lives = 0;
   for (auto _ : state) {
     const rackopt::WearReliabilityResult r = rackopt::run_wear_reliability(d, opt);
     benchmark::DoNotOptimize(r.summary.life.data());
     samples_ms += r.samples_ms;
     fit_ms += r.fit_ms;
     nominal_ms += r.nominal_ms;
+    exact_ms += r.exact_ms;
+    lives += static_cast<double>(r.table.used ? r.table.evaluations + static_cast<int>(r.table.samples_direct)
+                                              : static_cast<int>(r.lives.size())) +
+             r.exact.model_evaluations + 1;
   }
   const double n = static_cast<double>(state.iterations());
   state.counters["samples_ms"] = samples_ms / n;
   state.counters["fit_ms"] = fit_ms / n;
+  state.counters["exact_ms"] = exact_ms / n;
   state.counters["nominal_ms"] = nominal_ms / n;
+  state.counters["lives"] = lives / n;
 }
 BENCHMARK(BM_LifeAtR)
-    ->ArgNames({"samples", "points"})
-    ->Args({1000, 0})
-    ->Args({1000, 60})
-    ->Args({10000, 0})
+    ->ArgNames({"samples", "points", "table", "replicates"})
+    ->Args({1000, 0, 1, 100})   // the default run (rackopt wear problems/ship_lift.yaml)
+    ->Args({1000, 0, 1, 200})
+    ->Args({1000, 0, 0, 200})   // before: one life per sample, bisection, 200 replicates
+    ->Args({1000, 60, 1, 100})
+    ->Args({10000, 0, 1, 100})
+    ->Args({10000, 0, 0, 200})
     ->Unit(benchmark::kMillisecond)
-    ->Iterations(1);
+    ->Iterations(3);
 
 // Lives [s] of an N-sample run of the shipped problem (seed 1), computed once.
 const std::vector<double>& lives_seconds(long n) {
@@ -157,6 +177,64 @@ void BM_EmpiricalAndOneFit(benchmark::State& state) {
 }
 BENCHMARK(BM_EmpiricalAndOneFit)->Unit(benchmark::kMicrosecond);
 
+// --ks_table: the KS critical value's accuracy against the number of
+// bootstrap replicates B, for the fits of the seed-1 lives of the shipped
+// problem (docs/models/reliability.md "Bootstrap replicates"): over 100
+// bootstrap seeds, the mean, bias and sd of the critical value, how often the
+// seed-1 sample is accepted, and the decision with the seed the summary uses.
+// Reference: B = 20000. About 3 minutes on 2 threads.
+void ks_table() {
+  using namespace rackopt::reliability;
+  const std::vector<double>& lives = lives_seconds(1000);
+  std::vector<double> pos;
+  for (double v : lives)
+    if (v > 0) pos.push_back(v);
+  const Family order[] = {Family::kGamma, Family::kWeibull, Family::kLognormal};  // summary's candidate order
+  std::printf("| family | D (seed 1) | B | critical value: mean | bias vs B = 20000 | sd | accepted in (of 100 bootstrap seeds) | shipped bootstrap seed: critical | accepted |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (int c = 0; c < 3; ++c) {
+    const Family f = order[c];
+    const LifeFit fit = fit_life_distribution(f, pos);
+    const double D = ks_statistic(fit.distribution, pos);
+    const KsTest ref = ks_test_fitted(f, fit.distribution, pos, 0.05, {.replicates = 20000, .seed = 987654321, .threads = 2});
+    for (int B : {20, 50, 100, 200, 500, 1000}) {
+      std::vector<double> crit;
+      int accepted = 0;
+      for (int s = 0; s < 100; ++s) {
+        const KsTest t = ks_test_fitted(f, fit.distribution, pos, 0.05,
+                                        {.replicates = B, .seed = mix64(1000 + static_cast<std::uint64_t>(s)), .threads = 2});
+        crit.push_back(t.critical_value);
+        accepted += t.accepted ? 1 : 0;
+      }
+      double m = 0, v = 0;
+      for (double x : crit) m += x;
+      m /= static_cast<double>(crit.size());
+      for (double x : crit) v += (x - m) * (x - m);
+      v /= static_cast<double>(crit.size() - 1);
+      // The seed summarize_lives uses for candidate c with reliability.seed 1.
+      const KsTest shipped = ks_test_fitted(
+          f, fit.distribution, pos, 0.05,
+          {.replicates = B, .seed = mix64(1 + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(c + 1)), .threads = 1});
+      std::printf("| %s | %.5f | %d | %.5f | %+.5f | %.5f | %d | %.5f | %s |\n", family_name(f), D, B, m,
+                  m - ref.critical_value, std::sqrt(v), accepted, shipped.critical_value, shipped.accepted ? "yes" : "no");
+    }
+    std::printf("| %s | %.5f | 20000 | %.5f (reference; p = %.3f) | | | | | |\n", family_name(f), D, ref.critical_value,
+                ref.p_value);
+  }
+}
+
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--ks_table") {
+      ks_table();
+      return 0;
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
