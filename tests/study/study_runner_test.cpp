@@ -20,6 +20,16 @@ namespace {
 
 using namespace rackopt::study::testing;
 
+// Removes this process's result folders at the end.
+class CleanUp : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(test_root(), ec);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const clean_up = ::testing::AddGlobalTestEnvironment(new CleanUp);
+
 std::string bits(const std::vector<double>& x) {
   std::string k(x.size() * sizeof(double), '\0');
   if (!x.empty()) std::memcpy(k.data(), x.data(), k.size());
@@ -104,11 +114,13 @@ TEST(StudySweep, GridIsIndependentOfThreadCount) {
   EXPECT_TRUE(std::filesystem::exists(one.evaluations_csv_path));
 }
 
-TEST(StudySweep, LatinHypercubeSnapsDiscreteValuesAndIsThreadIndependent) {
+class StudySampledSweep : public ::testing::TestWithParam<SweepSpec::Method> {};
+
+TEST_P(StudySampledSweep, SnapsDiscreteValuesAndIsThreadIndependent) {
   StudySpec s = railway_spec(StudyKind::kSweep);
   s.variables = {continuous("pinion.pressure_angle", 12 * kDeg, 20 * kDeg),
                  discrete("pinion.teeth", {18, 22, 26})};
-  s.sweep.method = SweepSpec::Method::kLatinHypercube;
+  s.sweep.method = GetParam();
   s.sweep.points = 20;
   s.report_metrics = {metrics::parse_metric_request("contact_ratio")};
   const StudyResult one = run_study(s, options_in(fresh_dir("lhs1"), 1));
@@ -122,6 +134,9 @@ TEST(StudySweep, LatinHypercubeSnapsDiscreteValuesAndIsThreadIndependent) {
     EXPECT_EQ(bits(one.sweep_points[k].metric_values), bits(two.sweep_points[k].metric_values));
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Samplers, StudySampledSweep,
+                         ::testing::Values(SweepSpec::Method::kLatinHypercube, SweepSpec::Method::kSobol));
 
 TEST(StudySweep, ImpossibleDesignsAreFailedEvaluationsWithReasons) {
   // 5..45 deg: below ~8 deg the path of contact is shorter than a pitch,
@@ -183,7 +198,10 @@ TEST(StudyOptimize, AtLeastAsGoodAsADenseGridAndReproducible) {
   ASSERT_TRUE(g.best);
 
   const StudySpec s = sizing_spec(StudyKind::kOptimize);
-  const StudyResult a = run_study(s, options_in(fresh_dir("opt_a")));
+  RunOptions with_progress = options_in(fresh_dir("opt_a"));
+  std::vector<Progress> seen;
+  with_progress.progress = [&](const Progress& p) { seen.push_back(p); };
+  const StudyResult a = run_study(s, with_progress);
   ASSERT_TRUE(a.best) << a.status;
   EXPECT_TRUE(a.best->feasible);
   // Constraints respected in the reported best (our re-check, from the metric).
@@ -198,6 +216,14 @@ TEST(StudyOptimize, AtLeastAsGoodAsADenseGridAndReproducible) {
   EXPECT_EQ(a.best_history.back(), a.best->objectives[0]);
   ASSERT_TRUE(a.best_drive);
   EXPECT_EQ(a.best_drive->rack.span, a.best->x[1]);
+  // Progress after every evaluation, against the planned budget.
+  ASSERT_EQ(seen.size(), a.evaluations);
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    EXPECT_EQ(seen[i].done, i + 1);
+    EXPECT_EQ(seen[i].budget, s.solver.max_evaluations + 1);
+  }
+  ASSERT_TRUE(seen.back().best);
+  EXPECT_EQ(*seen.back().best, a.best->objectives[0]);
 
   const StudyResult b = run_study(s, options_in(fresh_dir("opt_b")));
   ASSERT_TRUE(b.best);
@@ -306,14 +332,30 @@ TEST(StudyOptimize, DiscreteEnumerationPicksTheBestCombination) {
 }
 
 TEST(StudyOptimize, SetupErrorsAreInputErrors) {
+  const std::string dir = fresh_dir("setup");
   StudySpec s = sizing_spec(StudyKind::kOptimize);
   s.solver.algorithm = "LN_BOBYQA";  // cannot take the constraint
-  EXPECT_THROW(run_study(s, options_in(fresh_dir("setup"))), InputError);
+  try {
+    run_study(s, options_in(dir));
+    FAIL() << "BOBYQA with a constraint ran";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("COBYLA"), std::string::npos) << e.what();  // says what to use instead
+  }
   StudySpec w = sizing_spec(StudyKind::kOptimize);
   w.objectives = {objective("wear_life")};  // the railway problem has no wear section
-  EXPECT_THROW(run_study(w, options_in(fresh_dir("setup"))), InputError);
+  EXPECT_THROW(run_study(w, options_in(dir)), InputError);
+  StudySpec m = sizing_spec(StudyKind::kOptimize);
+  m.variables.push_back(discrete("pinion.teeth", {18, 19, 20, 21, 22}));
+  m.variables.push_back(discrete("pinion.profile_shift", {0, 0.1, 0.2, 0.3}));
+  m.max_discrete_combinations = 12;
+  try {
+    run_study(m, options_in(dir));
+    FAIL() << "20 combinations ran with a limit of 12";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pinion.teeth"), std::string::npos) << e.what();
+  }
   // Nothing was recorded by a refused study.
-  EXPECT_FALSE(std::filesystem::exists(fresh_dir("setup") + "/evaluations.sqlite"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/evaluations.sqlite"));
 }
 
 // ---------------------------------------------------------------- resume
@@ -461,6 +503,22 @@ TEST(StudyEvaluate, OneDesignMatchesEvaluateMetricsDirectly) {
   for (std::size_t i = 0; i < want.size(); ++i) EXPECT_EQ(r.best->metric_values[i], v.values[i].value);
   ASSERT_TRUE(r.best_drive);
   EXPECT_EQ(r.best_drive->pinion.pressure_angle, 17 * kDeg);
+}
+
+TEST(StudyEvaluate, WithoutVariablesEvaluatesTheProblemAsWrittenAndResumes) {
+  StudySpec s = railway_spec(StudyKind::kEvaluate);
+  s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
+  const std::string dir = fresh_dir("evaluate_plain");
+  const StudyResult r = run_study(s, options_in(dir));
+  ASSERT_TRUE(r.best);
+  EXPECT_TRUE(r.best->x.empty());
+  EXPECT_DOUBLE_EQ(metric(*r.best, "supports_per_metre"), 1 / 2.4);  // rack.span: 2.4 m in the file
+  RunOptions again = options_in(dir);
+  again.resume = true;
+  const StudyResult r2 = run_study(s, again);
+  EXPECT_EQ(r2.reused_evaluations, 1u);
+  EXPECT_EQ(r2.evaluations, 1u);
+  EXPECT_EQ(rows_of(r2, s).size(), 1u);
 }
 
 TEST(StudyReliability, RunsTheWearAnalysisOfTheDesign) {

@@ -1,6 +1,8 @@
 // Study specs built directly in C++ (the YAML loader is another module).
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <string>
 
@@ -64,9 +66,15 @@ inline ConstraintSpec constraint(const std::string& text, std::optional<double> 
   return c;
 }
 
+// This process's folder under the temp dir: a normal and a sanitizer build
+// (or ctest -j) may run these tests at the same time.
+inline std::filesystem::path test_root() {
+  return std::filesystem::temp_directory_path() / ("rackopt_study_test_" + std::to_string(::getpid()));
+}
+
 // A fresh, empty folder for one test's results.
 inline std::string fresh_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_study_test_" + name);
+  const auto dir = test_root() / name;
   std::filesystem::remove_all(dir);
   return dir.string();
 }

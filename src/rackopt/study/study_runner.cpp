@@ -646,8 +646,8 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           continue;
         }
         solvers::ParetoCallbacks cb;
-        cb.observer = [&rp, &run](const std::string& label, const solvers::EvaluationRecord& rec) {
-          run.set_phase(label);
+        cb.observer = [&rp, &run, &phase](const std::string& label, const solvers::EvaluationRecord& rec) {
+          run.set_phase(phase.empty() ? label : phase + ": " + label);
           rp.observed(rec, label);
         };
         cb.stop = [&run] { return run.stop_requested(); };

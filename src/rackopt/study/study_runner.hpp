@@ -40,8 +40,10 @@ struct StudyResult {
   std::string status;   // "ok" (evaluate/sweep/reliability done), the SolverResult / ParetoResult status
                         // (optimize: "converged", "max_evaluations", ...; pareto: "ok", "anchor_infeasible", ...),
                         // "no_feasible_point", "all_failed", "stopped"
-  std::optional<DesignResult> best;            // optimize/evaluate/reliability: best feasible design;
-                                               // sweep: best feasible by objective 0 (if any objective)
+  std::optional<DesignResult> best;            // optimize: best feasible design; evaluate/reliability:
+                                               // the design (even when infeasible or failed);
+                                               // sweep: best feasible by objective 0 (if any objective);
+                                               // pareto: the chosen front point
   std::optional<DesignResult> least_infeasible;  // when no feasible design was found
   std::vector<DesignResult> front;             // pareto: feasible, non-dominated, sorted by objective 0
   std::optional<std::size_t> chosen;           // pareto: index into front of the chosen design
@@ -85,6 +87,32 @@ struct RunOptions {
 // store cannot be opened (another study's results in out_dir, a folder
 // already used without --resume). A design the models reject never throws:
 // it is a failed evaluation in the store and in the counts.
+//
+// What each kind does (StudyProblem, study_problem.hpp, has the mapping of
+// metrics to objectives and constraints):
+//  * The start design (continuous variables at start or mid-range, discrete
+//    at start or their first value) is evaluated first, phase "start": it
+//    sets the automatic objective scales and is the design of evaluate and
+//    reliability. A sweep evaluates it only when an objective has an
+//    automatic scale, and never ranks it.
+//  * sweep: grid (first variable slowest) / Latin hypercube / Sobol from
+//    spec.seed, discrete values snapped to the nearest; evaluated in
+//    parallel by chunks, recorded in sampler order (phase "sweep k"), so the
+//    store and the result are the same on any thread count. Stop is polled
+//    between chunks.
+//  * optimize: every combination of the discrete values (last one fastest),
+//    solver from the start point with seed = spec.seed; best = best feasible
+//    design over every evaluation (our re-check). status: "stopped",
+//    "no_feasible_point" / "all_failed", else the solver status of the best
+//    design's combination.
+//  * pareto: pareto_front per combination, fronts merged with non_dominated;
+//    `best` is the chosen front point too.
+//  * reliability: run_wear_reliability on the start design with
+//    metric_options' samples/seed/bootstrap overrides.
+// Counting: a design is evaluated at most once per store; a design asked
+// for again (another start or sub-problem, a sweep duplicate) is answered
+// from the store and not counted again. best_history holds +inf (minimize) or
+// -inf (maximize) until the first feasible design.
 StudyResult run_study(const StudySpec& spec, const RunOptions& options);
 
 }  // namespace rackopt::study
