@@ -48,6 +48,10 @@ Args parse_args(int argc, char** argv) {
       a.threads = static_cast<int>(parse_whole(s, need_value(s), 1, 1024));
     } else if (s == "--json") {
       a.json = true;
+    } else if (s == "--resume") {
+      a.resume = true;
+    } else if (s == "--progress") {
+      a.progress = true;
     } else if (s == "-h" || s == "--help") {
       a.command = "help";
     } else if (!s.empty() && s[0] == '-') {

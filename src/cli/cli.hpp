@@ -22,7 +22,9 @@ struct Args {
   bool json = false;
   long samples = -1;       // --samples N (wear): overrides reliability.samples
   long seed = -1;          // --seed S (wear): overrides reliability.seed
-  int threads = 0;         // --threads N (wear): 0 = all cores
+  int threads = 0;         // --threads N (wear, run): 0 = all cores
+  bool resume = false;     // --resume (run): continue a study from its evaluation store
+  bool progress = false;   // --progress (run): progress bar even when stderr is not a terminal
 };
 
 struct UsageError : std::runtime_error {
@@ -40,5 +42,6 @@ double ms_since(std::chrono::steady_clock::time_point t0);
 int cmd_check(const Args& a);
 int cmd_stiffness(const Args& a);
 int cmd_wear(const Args& a);
+int cmd_run(const Args& a);
 
 }  // namespace rackopt::cli

@@ -4,6 +4,8 @@
 //   rackopt stiffness FILE [--set key=value]... [--out DIR] [--json]
 //   rackopt wear FILE [--set key=value]... [--out DIR] [--json] [--samples N]
 //                [--seed S] [--threads N]
+//   rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]
+//               [--json] [--progress]
 //
 // Exit codes: 0 ok, 1 run failed, 2 bad input (file, key, value or an
 // impossible design). With --json exactly one JSON object goes to stdout and
@@ -32,9 +34,20 @@ const char* kUsage =
     "               [--samples N] [--seed S] [--threads N]\n"
     "      Archard wear along both flanks, wear life, and life at reliability R by\n"
     "      Monte Carlo (problem keys wear, duty, reliability; docs/yaml.md)\n"
+    "  rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]\n"
+    "              [--json] [--progress]\n"
+    "      run a study file (studies/*.yaml: evaluate, sweep, optimize, pareto,\n"
+    "      reliability); every evaluation goes to DIR/evaluations.sqlite as it\n"
+    "      happens, then DIR/summary.json, CSVs, plots and DIR/report.md\n"
+    "      (default DIR: out/<study name>). Ctrl-C stops cleanly and writes the\n"
+    "      results so far; --resume continues without redoing recorded evaluations.\n"
+    "      --set problem.<key>=value changes the problem, any other key the study\n"
+    "      (e.g. --set solver.max_evaluations=50); --progress shows the progress\n"
+    "      bar even when stderr is not a terminal\n"
     "\n"
     "  --set key=value   override any key of the problem, e.g. --set rack.span=\"1.2 m\"\n"
-    "exit codes: 0 ok, 1 run failed, 2 bad input\n";
+    "exit codes: 0 ok (also a study with no feasible design), 1 run failed (also a\n"
+    "study whose every evaluation failed), 2 bad input, 130 study stopped by Ctrl-C\n";
 
 }  // namespace
 
@@ -51,12 +64,13 @@ int main(int argc, char** argv) {
     std::cerr << kUsage;
     return args.command == "help" ? kOk : kBadInput;
   }
-  if (args.command != "check" && args.command != "stiffness" && args.command != "wear") {
+  if (args.command != "check" && args.command != "stiffness" && args.command != "wear" && args.command != "run") {
     std::cerr << "rackopt: unknown command '" << args.command << "'\n" << kUsage;
     return kBadInput;
   }
   if (args.file.empty()) {
-    std::cerr << "rackopt: " << args.command << " needs a problem FILE\n" << kUsage;
+    std::cerr << "rackopt: " << args.command << " needs a " << (args.command == "run" ? "study" : "problem")
+              << " FILE\n" << kUsage;
     return kBadInput;
   }
   auto fail = [&](int code, const std::string& kind, const std::string& msg) {
@@ -71,6 +85,7 @@ int main(int argc, char** argv) {
   try {
     if (args.command == "check") return cmd_check(args);
     if (args.command == "stiffness") return cmd_stiffness(args);
+    if (args.command == "run") return cmd_run(args);
     return cmd_wear(args);
   } catch (const rackopt::InputError& e) {
     return fail(kBadInput, "input", e.what());

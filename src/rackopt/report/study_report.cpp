@@ -454,12 +454,12 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
   return o.str();
 }
 
-std::string history_gnuplot(const StudySpec& spec, const std::string& label) {
+std::string history_gnuplot(const StudySpec& spec, const std::string& label, std::size_t evaluations) {
   const MetricUnit u = metric_unit(label);
   std::ostringstream o;
   o << gp_header("history.png", 1100, 700);
   o << "set title " << gq(spec.name + ": convergence") << "\n";
-  o << "set xlabel 'evaluation'\n";
+  o << "set xlabel 'evaluation'\nset xrange [0:" << std::max<std::size_t>(evaluations, 1) << "]\n";
   o << "set ylabel " << gq("best feasible " + axis_label(label, u.display)) << "\n";
   o << "set key top right\n";
   o << "plot 'history.csv' skip 1 using 1:" << gp_value(2, u.factor) << " with steps lw 2 title 'best feasible so far'\n";
@@ -630,7 +630,8 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
       md_design(o, spec, result.front[*result.chosen]);
     }
   } else if (result.best) {
-    o << "### Best design" << (result.best->label.empty() ? "" : " (" + result.best->label + ")") << "\n\n";
+    const bool single = spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability;
+    o << (single ? "### Design" : "### Best design") << (result.best->label.empty() ? "" : " (" + result.best->label + ")") << "\n\n";
     md_design(o, spec, *result.best);
   }
   if (result.least_infeasible) {
@@ -729,6 +730,9 @@ std::string status_message(const StudySpec& spec, const StudyResult& r) {
   }
   if (spec.kind == StudyKind::kPareto) {
     s += " " + std::to_string(r.front.size()) + " front point" + (r.front.size() == 1 ? "" : "s") + ".";
+  } else if (r.best && (spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability)) {
+    s += r.best->ok ? (r.best->feasible ? " The design is feasible." : " The design violates the constraints.")
+                    : " The design failed: " + r.best->message;
   } else if (r.best) {
     s += r.best->feasible ? " Best feasible design shown." : " Best design shown.";
   } else if (r.least_infeasible) {
@@ -959,7 +963,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
     plot("pareto_png", "pareto.gp", pareto_gnuplot(spec, front_table, result.evaluations_csv_path), "pareto.png");
   }
   if (any_history && !spec.objectives.empty()) {
-    plot("history_png", "history.gp", history_gnuplot(spec, spec.objectives[0].label), "history.png");
+    plot("history_png", "history.gp", history_gnuplot(spec, spec.objectives[0].label, result.best_history.size()), "history.png");
   }
   if (!sweep_table.text.empty() && !spec.variables.empty() && !labels.empty()) {
     plot("sweep_png", "sweep.gp", sweep_gnuplot(spec, sweep_table, labels), "sweep.png");

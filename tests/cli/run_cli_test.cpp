@@ -1,0 +1,293 @@
+// `rackopt run` end to end: the shipped sizing study, --json, bad study files,
+// a study with no feasible design, Ctrl-C and kill -9 followed by --resume.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/study_spec.hpp"
+#include "rackopt/studyfile/study_loader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string tmp_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("rackopt_run_cli_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+// Runs the CLI with `args` (shell words) from the source directory.
+CliResult run(const std::string& args, const std::string& scratch) {
+  const std::string err_file = scratch + "/stderr.txt";
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args + " 2>'" +
+                          err_file + "'";
+  CliResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = slurp(err_file);
+  return r;
+}
+
+// Starts the CLI in the background with stdout/stderr to files; returns its pid.
+pid_t start(const std::string& args, const std::string& out_file, const std::string& err_file) {
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && exec '" + RACKOPT_CLI + "' " + args +
+                          " >'" + out_file + "' 2>'" + err_file + "'";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
+// Largest "N/M evaluations" count the progress bar has drawn so far.
+long progress_done(const std::string& err_file) {
+  const std::string text = slurp(err_file);
+  static const std::regex re(R"((\d+)/\d+ evaluations)");
+  long best = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it) {
+    best = std::max(best, std::stol((*it)[1].str()));
+  }
+  return best;
+}
+
+// Waits until the background run has drawn at least `done` evaluations (or
+// ended); false when it ended first or 60 s passed.
+bool wait_for_progress(pid_t pid, const std::string& err_file, long done) {
+  const auto t0 = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
+    if (progress_done(err_file) >= done) return true;
+    int status = 0;
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+int wait_exit(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return -1;
+}
+
+// A 20 x 20 grid sweep on the seed 000 problem with a fine travel sampling
+// (a few ms per design, so that a run lasts long enough to be interrupted).
+// The objective has a fixed scale, so no start design is evaluated: the
+// study needs exactly kSweepSize evaluations.
+constexpr std::size_t kSweepSize = 400;
+std::string write_sweep_study(const std::string& dir) {
+  const std::string path = dir + "/sweep.yaml";
+  std::ofstream(path) << "study: {name: resume sweep, kind: sweep, seed: 3}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "problem_set:\n  numerics.positions_per_period: 800\n"
+                      << "variables:\n"
+                      << "  rack.span: {lower: 1.2 m, upper: 3 m}\n"
+                      << "  pinion.pressure_angle: {lower: 17 deg, upper: 25 deg}\n"
+                      << "objectives:\n  - {metric: stiffness_fluctuation, scale: 1}\n"
+                      << "constraints:\n  - {metric: contact_ratio, min: 1.6}\n"
+                      << "sweep: {method: grid, levels: 20}\n"
+                      << "output: {plots: off, report: on, stiffness_curve: off}\n";
+  return path;
+}
+
+// Every x of the store, checked for repeats through the record API.
+void expect_store_complete(const std::string& study_file, const std::string& out_dir) {
+  const rackopt::study::StudySpec spec = rackopt::study::load_study_file(study_file);
+  std::vector<std::string> names;
+  for (const auto& v : spec.variables) names.push_back(v.key);
+  auto store = rackopt::record::EvaluationStore::open(out_dir + "/evaluations.sqlite",
+                                                      rackopt::study::study_fingerprint(spec), names, true);
+  const auto all = store.all();
+  EXPECT_EQ(all.size(), kSweepSize);
+  std::set<std::vector<double>> xs;
+  for (const auto& e : all) EXPECT_TRUE(xs.insert(e.x).second) << "evaluated twice: id " << e.id;
+  EXPECT_EQ(xs.size(), kSweepSize);
+}
+
+TEST(RunCli, ShippedSizingStudyPrintsTheSummaryObject) {
+  const std::string dir = tmp_dir("sizing");
+  const CliResult r = run("run studies/rack_railway_sizing.yaml --json --out " + dir + "/out", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // exactly one JSON value on stdout
+  EXPECT_EQ(j["kind"], "optimize");
+  EXPECT_EQ(j["study"], "rack railway sizing");
+  for (const char* key : {"status", "best", "evaluations", "failed_evaluations", "reused_evaluations", "timings",
+                          "files", "warnings"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  ASSERT_TRUE(j["best"].is_object());
+  EXPECT_TRUE(j["best"]["feasible"].get<bool>());
+  // the constraints of the study file, checked on the reported design
+  EXPECT_GE(j["best"]["metrics"]["contact_ratio"]["value"].get<double>(), 1.3 - 1e-6);
+  EXPECT_LE(j["best"]["metrics"]["supports_per_metre"]["value"].get<double>(), 0.5 + 1e-6);
+  const double span = j["best"]["variables"]["rack.span"]["value"].get<double>();
+  EXPECT_GE(span, 1.2);
+  EXPECT_LE(span, 3.0);
+  EXPECT_GT(j["evaluations"].get<long>(), 0);
+  EXPECT_EQ(j["reused_evaluations"], 0);
+  EXPECT_GT(j["timings"]["seconds"].get<double>(), 0.0);
+  // What --json printed is summary.json.
+  EXPECT_EQ(j, nlohmann::json::parse(slurp(dir + "/out/summary.json")));
+  for (const auto& [role, path] : j["files"].items()) EXPECT_TRUE(fs::exists(path.get<std::string>())) << role;
+  EXPECT_TRUE(j["files"].contains("database"));
+  EXPECT_TRUE(j["files"].contains("best_csv"));
+  // People's text went to stderr.
+  EXPECT_NE(r.err.find("best design"), std::string::npos) << r.err;
+}
+
+TEST(RunCli, BadStudyFileIsExit2WithFileLineColumn) {
+  const std::string dir = tmp_dir("bad");
+  const std::string path = dir + "/bad.yaml";
+  std::ofstream(path) << "study: {name: bad, kind: optimize}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "variables:\n"
+                      << "  rack.span: {lower: 3 m, upper: 1.2 m}\n"
+                      << "objectives: [stiffness_fluctuation]\n";
+  const CliResult r = run("run '" + path + "' --json --out " + dir + "/out", dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("bad.yaml:4:"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["ok"].get<bool>());
+  EXPECT_EQ(j["error"], "input");
+
+  const CliResult missing = run("run '" + dir + "/nothing.yaml' --out " + dir + "/out2", dir);
+  EXPECT_EQ(missing.code, 2);
+  const CliResult unknown_set = run("run '" + path + "' --set solver.no_such_key=3 --out " + dir + "/out3", dir);
+  EXPECT_EQ(unknown_set.code, 2);
+}
+
+TEST(RunCli, NoFeasiblePointExitsZeroAndShowsTheLeastInfeasibleDesign) {
+  const std::string dir = tmp_dir("infeasible");
+  const std::string path = dir + "/infeasible.yaml";
+  std::ofstream(path) << "study: {name: impossible, kind: optimize}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "variables:\n  rack.span: {lower: 1.2 m, upper: 3 m}\n"
+                      << "objectives: [stiffness_fluctuation]\n"
+                      << "constraints:\n  - {metric: contact_ratio, min: 5}\n"
+                      << "solver: {algorithm: LN_COBYLA, max_evaluations: 15}\n";
+  const CliResult r = run("run '" + path + "' --json --out " + dir + "/out", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["status"], "no_feasible_point");
+  ASSERT_TRUE(j.contains("least_infeasible"));
+  EXPECT_GT(j["least_infeasible"]["max_violation"].get<double>(), 0.0);
+  EXPECT_LT(j["least_infeasible"]["metrics"]["contact_ratio"]["value"].get<double>(), 5.0);
+  EXPECT_NE(r.err.find("NO FEASIBLE DESIGN"), std::string::npos) << r.err;
+}
+
+TEST(RunCli, KillNineThenResumeLosesNothingAndRepeatsNothing) {
+  const std::string dir = tmp_dir("kill");
+  const std::string study = write_sweep_study(dir);
+
+  // Reference: uninterrupted, in its own folder.
+  const CliResult ref = run("run '" + study + "' --json --threads 2 --out " + dir + "/ref", dir);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const auto jref = nlohmann::json::parse(ref.out);
+  ASSERT_EQ(jref["evaluations"], kSweepSize);
+  ASSERT_TRUE(jref["best"].is_object());
+
+  const std::string out = dir + "/run";
+  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+                          dir + "/e1.txt");
+  ASSERT_GT(pid, 0);
+  const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 60);
+  if (mid_run) kill(pid, SIGKILL);
+  const int code = wait_exit(pid);
+  ASSERT_TRUE(mid_run) << "the sweep ended before it could be killed (exit " << code << ")";
+  EXPECT_EQ(code, 128 + SIGKILL);
+
+  const CliResult resumed = run("run '" + study + "' --json --resume --threads 2 --out " + out, dir);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const auto j = nlohmann::json::parse(resumed.out);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["evaluations"], kSweepSize);
+  EXPECT_GT(j["reused_evaluations"].get<long>(), 0);
+  EXPECT_LT(j["reused_evaluations"].get<long>(), static_cast<long>(kSweepSize));
+  EXPECT_EQ(j["best"], jref["best"]);
+  EXPECT_EQ(j["sweep_points"], jref["sweep_points"]);
+  EXPECT_EQ(j["feasible_points"], jref["feasible_points"]);
+  EXPECT_EQ(slurp(out + "/sweep.csv"), slurp(dir + "/ref/sweep.csv"));
+  expect_store_complete(study, out);
+}
+
+TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
+  const std::string dir = tmp_dir("sigint");
+  const std::string study = write_sweep_study(dir);
+  const std::string out = dir + "/run";
+  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+                          dir + "/e1.txt");
+  ASSERT_GT(pid, 0);
+  const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 40);
+  if (mid_run) kill(pid, SIGINT);
+  const int code = wait_exit(pid);
+  ASSERT_TRUE(mid_run) << "the sweep ended before it could be interrupted (exit " << code << ")";
+  EXPECT_EQ(code, 130);
+  const auto stopped = nlohmann::json::parse(slurp(dir + "/o1.txt"));
+  EXPECT_EQ(stopped["status"], "stopped");
+  EXPECT_NE(stopped["message"].get<std::string>().find("--resume"), std::string::npos);
+  EXPECT_LT(stopped["evaluations"].get<long>(), static_cast<long>(kSweepSize));
+  EXPECT_GT(stopped["evaluations"].get<long>(), 0);
+  EXPECT_TRUE(fs::exists(out + "/summary.json"));
+  EXPECT_TRUE(fs::exists(out + "/report.md"));
+  EXPECT_NE(slurp(dir + "/e1.txt").find("--resume"), std::string::npos);
+
+  const CliResult resumed = run("run '" + study + "' --json --resume --out " + out, dir);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const auto j = nlohmann::json::parse(resumed.out);
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_EQ(j["evaluations"], kSweepSize);
+  // Everything the stopped run recorded was committed (a clean stop flushes).
+  EXPECT_EQ(j["reused_evaluations"], stopped["evaluations"]);
+  expect_store_complete(study, out);
+}
+
+TEST(RunCli, UsedFolderWithoutResumeIsRefused) {
+  const std::string dir = tmp_dir("reuse");
+  const std::string path = dir + "/tiny.yaml";
+  std::ofstream(path) << "study: {name: tiny, kind: evaluate}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "report: [contact_ratio]\n";
+  ASSERT_EQ(run("run '" + path + "' --out " + dir + "/out", dir).code, 0);
+  const CliResult again = run("run '" + path + "' --out " + dir + "/out", dir);
+  EXPECT_NE(again.code, 0);
+  EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+}
+
+}  // namespace
