@@ -5,13 +5,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -77,11 +78,16 @@ pid_t start(const std::string& args, const std::string& out_file, const std::str
 
 // Largest "N/M evaluations" count the progress bar has drawn so far.
 long progress_done(const std::string& err_file) {
+  // (no std::regex: GCC 12 warns inside it under the sanitizer build)
   const std::string text = slurp(err_file);
-  static const std::regex re(R"((\d+)/\d+ evaluations)");
   long best = 0;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), re); it != std::sregex_iterator(); ++it) {
-    best = std::max(best, std::stol((*it)[1].str()));
+  for (std::size_t at = text.find(" evaluations"); at != std::string::npos; at = text.find(" evaluations", at + 1)) {
+    std::size_t slash = at;
+    while (slash > 0 && std::isdigit(static_cast<unsigned char>(text[slash - 1]))) --slash;
+    if (slash == at || slash == 0 || text[--slash] != '/') continue;  // not "N/M evaluations"
+    std::size_t begin = slash;
+    while (begin > 0 && std::isdigit(static_cast<unsigned char>(text[begin - 1]))) --begin;
+    if (begin < slash) best = std::max(best, std::stol(text.substr(begin, slash - begin)));
   }
   return best;
 }
