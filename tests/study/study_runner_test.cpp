@@ -136,7 +136,10 @@ TEST_P(StudySampledSweep, SnapsDiscreteValuesAndIsThreadIndependent) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Samplers, StudySampledSweep,
-                         ::testing::Values(SweepSpec::Method::kLatinHypercube, SweepSpec::Method::kSobol));
+                         ::testing::Values(SweepSpec::Method::kLatinHypercube, SweepSpec::Method::kSobol),
+                         [](const ::testing::TestParamInfo<SweepSpec::Method>& param_info) {
+                           return std::string(param_info.param == SweepSpec::Method::kSobol ? "Sobol" : "LatinHypercube");
+                         });
 
 TEST(StudySweep, ImpossibleDesignsAreFailedEvaluationsWithReasons) {
   // 5..45 deg: below ~8 deg the path of contact is shorter than a pitch,
