@@ -12,7 +12,14 @@ namespace rackopt::study {
 // Reads and checks a study file. `overrides` are `--set` assignments:
 // "problem.<key>=value" is appended to problem_overrides (so any problem key
 // can be changed from the command line), anything else addresses the study
-// file itself ("solver.max_evaluations=50", "study.seed=3").
+// file itself ("solver.max_evaluations=50", "study.seed=3"). Variable and
+// problem_set keys contain dots, so "variables.rack.span.upper=3 m" edits
+// the field `upper` of the longest variable of the file that fits
+// ("rack.span"; a [lower, upper] shorthand is spelled out first), and
+// "variables.rack.span=[1 m, 2 m]" sets, adds or (empty value) removes it.
+// `problem_set` entries become problem_overrides "key=value" with the value
+// written back as a YAML flow value; an error the problem loader finds in
+// one is reported at the entry's line in the study file.
 // Also loads the problem once (so that a bad problem or a variable key the
 // problem does not know is reported before anything runs) and checks every
 // metric's requirements (check_metric_requests) against it.
