@@ -41,7 +41,7 @@ struct WearReliabilityOptions {
   // instead of one model life per sample (docs/models/reliability.md, "Life
   // table"). false = one direct life per sample and R(t) by bisection.
   bool life_table = true;
-  int life_table_nodes = 9;               // initial nodes, uniform in the input
+  int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
   int life_table_max_evaluations = 96;    // model lives the table may use
 };
