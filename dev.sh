@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One entry point for newcomers and CI.
-#   ./dev.sh demo            install what is missing, build, run the default analysis
+#   ./dev.sh demo            install what is missing, build, run the default study
 #   ./dev.sh test            install what is missing, build, run the whole test suite
 #   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan (build-asan/)
 #   ./dev.sh build           install + build only
@@ -38,7 +38,7 @@ case "$cmd" in
     install_missing; build build ;;
   demo)
     install_missing; build build
-    ./build/rackopt stiffness problems/rack_railway.yaml --out out/rack_railway "$@" ;;
+    ./build/rackopt run studies/rack_railway_sizing.yaml --out out/rack_railway_sizing --resume "$@" ;;
   test)
     install_missing
     if [ "${1:-}" = "--sanitize" ]; then

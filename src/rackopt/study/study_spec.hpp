@@ -14,7 +14,7 @@
 //   objectives: [stiffness_fluctuation]                # or {metric: ..., sense: maximize}
 //   constraints:
 //     - {metric: contact_ratio, min: 1.3}
-//     - {metric: min_stiffness_ks, min: 400 MN/m}
+//     - {metric: min_stiffness_ks, min: 24 MN/m}
 //   solver: {library: nlopt, algorithm: LN_COBYLA, max_evaluations: 400}
 #pragma once
 
