@@ -446,7 +446,8 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
         << " with points pt 7 ps 0.5 lc rgb '#c8c8c8' title 'every evaluation', \\\n     ";
     }
     o << "'front.csv' skip 1 using " << gp_value(col[a], unit[a].factor) << ":" << gp_value(col[b], unit[b].factor)
-      << " with linespoints pt 7 ps 1.2 lc rgb '#1f77b4' title 'front', \\\n     "
+      // a 2-objective front sorted by objective 0 is a curve; projections of a 3-objective one are not
+      << (n == 2 ? " with linespoints" : " with points") << " pt 7 ps 1.2 lc rgb '#1f77b4' title 'front', \\\n     "
       << "'' skip 1 using " << gp_value(col[a], unit[a].factor, chosen) << ":"
       << gp_value(col[b], unit[b].factor, chosen) << " with points pt 6 ps 3.5 lw 3 lc rgb '#d62728' title 'chosen'\n";
   }
@@ -496,6 +497,13 @@ std::string sweep_gnuplot(const StudySpec& spec, const DesignTable& t, const std
 }
 
 // ---- report.md --------------------------------------------------------------
+
+// YAML folded text ends with a newline
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
 
 std::string md_cell(const std::string& s) {
   std::string out;
@@ -547,7 +555,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
                             const std::vector<std::string>& warnings, const fs::path& out_dir) {
   std::ostringstream o;
   o << "# Study: " << spec.name << "\n\n";
-  if (!spec.description.empty()) o << spec.description << "\n\n";
+  if (!trimmed(spec.description).empty()) o << trimmed(spec.description) << "\n\n";
   o << "- kind: " << kind_name(spec.kind) << "\n";
   if (!spec.file.empty()) o << "- study file: `" << spec.file << "`\n";
   if (!spec.problem_path.empty()) o << "- problem: `" << spec.problem_path << "`\n";
@@ -748,7 +756,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("ok").value(true);
   j.key("study").value(spec.name);
   j.key("kind").value(kind_name(spec.kind));
-  j.key("description").value(spec.description);
+  j.key("description").value(trimmed(spec.description));
   j.key("file").value(spec.file);
   j.key("problem").value(spec.problem_path);
   j.key("seed").value(static_cast<double>(spec.seed));
