@@ -1,5 +1,6 @@
 #include "rackopt/output/json_writer.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -51,9 +52,11 @@ JsonWriter& JsonWriter::value(double v) {
     out_ += "null";
     return *this;
   }
+  // Shortest text that reads back to the same double: summary.json and
+  // --json values equal the recorded ones bit for bit.
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  out_ += buf;
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  out_.append(buf, r.ptr);
   return *this;
 }
 JsonWriter& JsonWriter::value(int v) {

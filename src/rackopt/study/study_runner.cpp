@@ -557,7 +557,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           const std::size_t j = duplicate_of[k] != SIZE_MAX ? duplicate_of[k] : k;
           Obtained o = got[j] ? *got[j] : Obtained{*fresh[j], Origin::kNew};
           if (j != k) o.origin = Origin::kRepeat;
-          run.settle(o, label, false, false);
+          run.settle(o, label, false);  // ranks: progress and history show the best so far
           result.sweep_points.push_back(run.to_result(o.design, label));
         }
       }
