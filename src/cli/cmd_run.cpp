@@ -116,6 +116,26 @@ std::string text_for_people(const study::StudySpec& spec, const study::StudyResu
       << ":\n";
     design_lines(o, spec, *r.best);
   }
+  if (spec.kind == study::StudyKind::kSweep && !r.sweep_points.empty()) {
+    // The response range of every metric over the points that computed it:
+    // the first thing one wants to know of a sweep.
+    const auto& labels = r.sweep_points.front().metric_labels;
+    o << "  metric ranges over the sweep:\n";
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (const auto& p : r.sweep_points) {
+        if (i >= p.metric_ok.size() || !p.metric_ok[i]) continue;
+        lo = std::min(lo, p.metric_values[i]);
+        hi = std::max(hi, p.metric_values[i]);
+      }
+      o << "    " << labels[i] << ": ";
+      if (lo > hi) {
+        o << "failed everywhere\n";
+      } else {
+        o << study::metric_display(labels[i], lo) << " .. " << study::metric_display(labels[i], hi) << "\n";
+      }
+    }
+  }
   if (r.least_infeasible) {
     o << "  NO FEASIBLE DESIGN. Least infeasible design ("
       << r.least_infeasible->label << "):\n";

@@ -114,6 +114,28 @@ TEST(StudySweep, GridIsIndependentOfThreadCount) {
   EXPECT_TRUE(std::filesystem::exists(one.evaluations_csv_path));
 }
 
+TEST(StudySweep, WithoutObjectivesHasNoBestAndNoLeastInfeasible) {
+  // A plain response sweep: nothing to rank, every point feasible, so the
+  // result must not pretend that no feasible design exists.
+  StudySpec s = railway_spec(StudyKind::kSweep);
+  s.variables = {continuous("rack.span", 1.2, 3.0)};
+  s.variables[0].levels = 4;
+  s.objectives.clear();
+  s.constraints.clear();
+  s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
+  const StudyResult r = run_study(s, options_in(fresh_dir("plain_sweep")));
+  ASSERT_EQ(r.sweep_points.size(), 4u);
+  for (const auto& p : r.sweep_points) EXPECT_TRUE(p.feasible);
+  EXPECT_FALSE(r.best);
+  EXPECT_FALSE(r.least_infeasible);
+  // With an impossible constraint the least infeasible point is reported.
+  s.constraints = {constraint("contact_ratio", 3.0)};
+  const StudyResult q = run_study(s, options_in(fresh_dir("plain_sweep_infeasible")));
+  EXPECT_FALSE(q.best);
+  ASSERT_TRUE(q.least_infeasible);
+  EXPECT_FALSE(q.least_infeasible->feasible);
+}
+
 class StudySampledSweep : public ::testing::TestWithParam<SweepSpec::Method> {};
 
 TEST_P(StudySampledSweep, SnapsDiscreteValuesAndIsThreadIndependent) {

@@ -110,10 +110,12 @@ TEST(StudyLoader, SpallSweepDeclaresItsFault) {
   const StudySpec s = load_study_file(kStudies + "/spall_severity_sweep.yaml");
   EXPECT_EQ(s.kind, StudyKind::kSweep);
   EXPECT_EQ(s.sweep.method, SweepSpec::Method::kGrid);
-  ASSERT_EQ(s.variables.size(), 2u);
+  ASSERT_EQ(s.variables.size(), 3u);
   EXPECT_EQ(s.variables[0].key, "faults[0].depth");
   EXPECT_DOUBLE_EQ(s.variables[0].lower, 0.5e-3);
   EXPECT_DOUBLE_EQ(s.variables[1].upper, 15e-3);
+  EXPECT_EQ(s.variables[2].key, "faults[0].width");
+  EXPECT_EQ(s.variables[2].levels, 4);
 }
 
 // -------------------------------------------------------------------- values

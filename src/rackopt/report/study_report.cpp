@@ -736,6 +736,11 @@ std::string status_message(const StudySpec& spec, const StudyResult& r) {
   } else {
     s = r.status + " after " + n + ".";
   }
+  if (spec.kind == StudyKind::kSweep) {
+    const auto feasible = std::count_if(r.sweep_points.begin(), r.sweep_points.end(),
+                                        [](const DesignResult& p) { return p.feasible; });
+    s += " " + std::to_string(feasible) + " of " + std::to_string(r.sweep_points.size()) + " points feasible.";
+  }
   if (spec.kind == StudyKind::kPareto) {
     s += " " + std::to_string(r.front.size()) + " front point" + (r.front.size() == 1 ? "" : "s") + ".";
   } else if (r.best && (spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability)) {

@@ -571,7 +571,11 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
             result.best = p;
         }
       }
-      if (!result.best) {
+      // A sweep without objectives has no best; the least infeasible point
+      // only means something when no point is feasible.
+      const bool any_feasible = std::any_of(result.sweep_points.begin(), result.sweep_points.end(),
+                                            [](const DesignResult& p) { return p.feasible; });
+      if (!result.best && !any_feasible) {
         for (const DesignResult& p : result.sweep_points)
           if (p.ok && (!result.least_infeasible || p.max_violation < result.least_infeasible->max_violation))
             result.least_infeasible = p;
