@@ -8,6 +8,8 @@
 //   ./build/accuracy_table problem.yaml ...        the same (stiffness only)
 //   ./build/accuracy_table wear [problem.yaml]     wear only (default: problems/ship_lift.yaml;
 //                                                  the cases are chosen for that drive, ~1-2 min)
+//   ./build/accuracy_table study                   optimizers on studies/rack_railway_sizing.yaml
+//                                                  (quality vs budget, forward vs central FD; ~2-3 min)
 //
 // Stiffness knobs:
 //  * numerics.quadrature_order: fixed Gauss-Legendre points per tooth integral,
@@ -27,6 +29,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +41,9 @@
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/solvers/solver.hpp"
+#include "rackopt/study/study_problem.hpp"
+#include "rackopt/studyfile/study_loader.hpp"
 #include "rackopt/wear/wear_life.hpp"
 
 namespace {
@@ -359,6 +366,176 @@ void wear_tables(const std::string& file) {
   }
 }
 
+// ---------------------------------------------------------------- studies
+// Solution quality against evaluations and time on
+// studies/rack_railway_sizing.yaml (docs/accuracy.md, "Studies"). Each run
+// does what run_study does for an optimize study, without the recorder:
+// the start design sets the objective scale, then every module value is
+// solved from the start point with solvers::minimize on StudyProblem, and
+// the best feasible design over the three is kept. Quality is always the
+// EXACT stiffness fluctuation of that design, also for the runs that
+// minimize its KS aggregate.
+
+struct StudyConfig {
+  std::string name;
+  std::string library = "nlopt", algorithm = "LN_COBYLA";
+  bool central = false;
+  bool ks_objective = false;  // minimize stiffness_fluctuation_ks(500) instead
+  int starts = 1;
+};
+
+struct StudyOutcome {
+  double fluctuation = INFINITY;  // exact, of the best feasible design (inf: none)
+  std::vector<double> x;          // that design, SI, spec order
+  std::size_t evaluations = 0, probes = 0;
+  double seconds = 0;
+  std::string status;             // per module value, "/"-separated
+};
+
+rackopt::study::StudySpec sizing_spec(bool ks_objective) {
+  rackopt::study::StudySpec s =
+      rackopt::study::load_study_file(std::string(RACKOPT_SOURCE_DIR) + "/studies/rack_railway_sizing.yaml");
+  if (ks_objective) {
+    s.objectives[0].metric =
+        rackopt::metrics::resolve_request(rackopt::metrics::parse_metric_request("stiffness_fluctuation_ks"));
+    s.objectives[0].label = rackopt::metrics::to_string(s.objectives[0].metric);
+    // Keep the exact value in every evaluation (read back below).
+    s.report_metrics.push_back(rackopt::metrics::parse_metric_request("stiffness_fluctuation"));
+  }
+  return s;
+}
+
+double exact_fluctuation(const rackopt::study::StudyProblem& p, const rackopt::study::DesignEvaluation& d) {
+  const auto& labels = p.metric_labels();
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (labels[i] == "stiffness_fluctuation") return d.metric_ok[i] ? d.metric_values[i] : INFINITY;
+  throw std::runtime_error("no stiffness_fluctuation in the study's metrics");
+}
+
+StudyOutcome solve_sizing(const StudyConfig& cfg, std::size_t budget, double xtol_rel = -1) {
+  using rackopt::study::StudyProblem;
+  const rackopt::study::StudySpec spec = sizing_spec(cfg.ks_objective);
+  rackopt::solvers::SolverSettings s = spec.solver;
+  s.library = cfg.library;
+  s.algorithm = cfg.algorithm;
+  s.central_differences = cfg.central;
+  s.max_evaluations = budget;
+  s.starts = cfg.starts;
+  if (xtol_rel >= 0) s.xtol_rel = xtol_rel;
+  StudyOutcome out;
+  const auto t0 = std::chrono::steady_clock::now();
+  StudyProblem base(spec);
+  base.set_objective_scales_from(base.evaluate_design(base.start_design()));
+  out.evaluations = 1;
+  std::vector<std::pair<StudyProblem, rackopt::solvers::SolverResult>> runs;
+  for (std::size_t c = 0; c < base.num_combinations(); ++c) {
+    StudyProblem q = base.for_combination(c);
+    rackopt::solvers::SolverResult r = rackopt::solvers::minimize(q, q.start_unit(), s);
+    out.evaluations += r.evaluations;
+    out.probes += r.gradient_evaluations;
+    out.status += (c ? "/" : "") + r.status;
+    runs.emplace_back(std::move(q), std::move(r));
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Outside the timing: the exact fluctuation of each module's best feasible
+  // design (deterministic, so the same value the run saw).
+  for (const auto& [q, r] : runs) {
+    if (!r.feasible) continue;
+    const std::vector<double> x = q.to_design(r.x);
+    const double f = exact_fluctuation(q, q.evaluate_design(x));
+    if (f < out.fluctuation) {
+      out.fluctuation = f;
+      out.x = x;
+    }
+  }
+  return out;
+}
+
+std::string design_text(const std::vector<double>& x) {
+  if (x.size() != 4) return "–";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.3f deg, %.0f mm, %.4f m, %.3f mm", x[0] * 180 / std::numbers::pi, x[1] * 1e3, x[2],
+                x[3] * 1e3);
+  return buf;
+}
+
+std::string gap_text(double f, double ref) {
+  if (!std::isfinite(f)) return "no feasible design";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2e", (f - ref) / ref);
+  return buf;
+}
+
+void study_tables() {
+  const std::vector<StudyConfig> configs = {
+      {"LN_COBYLA (shipped)", "nlopt", "LN_COBYLA", false, false},
+      {"LD_SLSQP, forward FD", "nlopt", "LD_SLSQP", false, false},
+      {"LD_SLSQP, central FD", "nlopt", "LD_SLSQP", true, false},
+      {"Ipopt, central FD", "ipopt", "", true, false},
+      {"LD_SLSQP, forward FD, KS objective", "nlopt", "LD_SLSQP", false, true},
+      {"Ipopt, central FD, KS objective", "ipopt", "", true, true},
+  };
+
+  // Reference: the best exact fluctuation of long runs of every configuration
+  // (4000 evaluations per module value, xtol_rel 1e-10), plus a multistart
+  // COBYLA and a global stochastic search against a local optimum that every
+  // local solver shares.
+  double ref = INFINITY;
+  std::string ref_by;
+  std::vector<double> ref_x;
+  std::printf("Long runs (4000 evaluations per module value, xtol_rel 1e-10); the best is the reference:\n\n");
+  std::printf("| configuration | fluctuation | design (angle, module, span, clearance) | evaluations | s | status |\n");
+  std::printf("|---|---|---|---|---|---|\n");
+  std::vector<StudyConfig> long_runs = configs;
+  long_runs.push_back({"LN_COBYLA, 10 starts (x0 + 9 LHS points)", "nlopt", "LN_COBYLA", false, false, 10});
+  long_runs.push_back({"GN_ISRES (global, stochastic, seed 1)", "nlopt", "GN_ISRES", false, false});
+  for (const StudyConfig& c : long_runs) {
+    const StudyOutcome o = solve_sizing(c, 4000, 1e-10);
+    std::printf("| %s | %.6f | %s | %zu | %.2f | %s |\n", c.name.c_str(), o.fluctuation, design_text(o.x).c_str(),
+                o.evaluations, o.seconds, o.status.c_str());
+    std::fflush(stdout);
+    if (o.fluctuation < ref) {
+      ref = o.fluctuation;
+      ref_by = c.name;
+      ref_x = o.x;
+    }
+  }
+  std::printf("\nReference optimum: fluctuation %.6f (%s) at %s.\n\n", ref, ref_by.c_str(),
+              design_text(ref_x).c_str());
+
+  std::printf("Budget per module value (the study's max_evaluations; 3 module values, +1 start design), "
+              "the file's tolerances (xtol_rel 1e-5); gap = (f - f_ref) / f_ref of the exact fluctuation:\n\n");
+  std::printf("| configuration | budget | evaluations (FD probes) | best feasible fluctuation | gap | s | status |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  for (const StudyConfig& c : configs) {
+    for (std::size_t budget : {25, 50, 100, 200, 400, 800}) {
+      const StudyOutcome o = solve_sizing(c, budget);
+      std::printf("| %s | %zu | %zu (%zu) | %.6f | %s | %.3f | %s |\n", c.name.c_str(), budget, o.evaluations,
+                  o.probes, o.fluctuation, gap_text(o.fluctuation, ref).c_str(), o.seconds, o.status.c_str());
+      std::fflush(stdout);
+    }
+  }
+
+  std::printf("\nFinite differences, forward vs central (budget 2000 per module value, the file's tolerances):\n\n");
+  std::printf("| solver | objective | differences | fluctuation | gap | evaluations (FD probes) | s | status |\n");
+  std::printf("|---|---|---|---|---|---|---|---|\n");
+  for (const bool ks : {false, true}) {
+    for (const char* library : {"nlopt", "ipopt"}) {
+      for (const bool central : {false, true}) {
+        const StudyConfig c{"", library, std::string(library) == "nlopt" ? "LD_SLSQP" : "", central, ks};
+        const StudyOutcome o = solve_sizing(c, 2000);
+        std::printf("| %s | %s | %s | %.6f | %s | %zu (%zu) | %.3f | %s |\n",
+                    std::string(library) == "nlopt" ? "LD_SLSQP" : "Ipopt",
+                    ks ? "stiffness_fluctuation_ks(500)" : "stiffness_fluctuation", central ? "central" : "forward",
+                    o.fluctuation, gap_text(o.fluctuation, ref).c_str(), o.evaluations, o.probes, o.seconds,
+                    o.status.c_str());
+        std::fflush(stdout);
+      }
+    }
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -367,6 +544,19 @@ int main(int argc, char** argv) {
   // given are stiffness problems, and no arguments at all runs both parts.
   std::vector<std::string> args(argv + 1, argv + argc);
   bool run_stiffness = true, run_wear = args.empty();
+  if (!args.empty() && args[0] == "study") {
+    if (args.size() > 1) {
+      std::fprintf(stderr, "usage: accuracy_table study\n");
+      return 2;
+    }
+    try {
+      study_tables();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
   if (!args.empty() && (args[0] == "stiffness" || args[0] == "wear")) {
     run_stiffness = args[0] == "stiffness";
     run_wear = !run_stiffness;
