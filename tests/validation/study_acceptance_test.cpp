@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -166,13 +167,16 @@ TEST(StudyAcceptance, RailwaySizingBeatsADenseGridAndRepeatsBitForBit) {
   std::size_t feasible_grid_points = 0;
   for (const DesignResult& p : g.sweep_points) feasible_grid_points += p.feasible ? 1 : 0;
 
-  // At least as good as the grid. Slack: 1e-4 relative. Any feasible grid
-  // point is a design the optimizer could have stopped at, so the optimizer
-  // can only lose to the grid by its own stopping resolution: COBYLA ends
-  // when its trust region is below xtol_rel = 1e-5 of the unit box, and the
-  // objective's slope along the active stiffness floor is below
-  // ~3 per unit box length (5.73 -> 5.78 over 1 cm of span = 1/180 box), so
-  // a grid point on the optimum could be better by at most ~3e-5 relative.
+  // At least as good as the grid, with a slack of 1e-4 relative. Any
+  // feasible grid point is a design the optimizer could have stopped at, so
+  // it can only lose to the grid by its own stopping resolution: COBYLA ends
+  // when its trust region is below xtol_rel = 1e-5 of the unit box. Near the
+  // optimum the fluctuation is V-shaped in the span (the position of the
+  // smallest stiffness switches; ~27 per metre on either side, 5.73 at the
+  // tip), i.e. at most ~8.5 relative per unit of the normalized span, so
+  // stopping 1e-5 away costs < 1e-4. When this was written the optimum beat
+  // the grid by 0.85 % (the grid's 1 cm span steps miss the narrow V between
+  // the 2 m support limit and the stiffness floor), far more than the slack.
   const double f_opt = a.best->objectives[0], f_grid = g.best->objectives[0];
   EXPECT_LE(f_opt, f_grid * (1 + 1e-4)) << "optimizer " << f_opt << " vs grid " << f_grid;
   std::printf("railway sizing: optimizer %.6f (%zu evaluations, %.2f s), dense grid %.6f (%zu points, %zu "
@@ -237,6 +241,8 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   ASSERT_EQ(spec.objectives.size(), 3u);
   const StudyResult r = run_study(spec, options_in(fresh_dir("ship_lift_front"), 2));
   ASSERT_GE(r.front.size(), 3u) << r.status;
+  std::printf("ship lift front: %zu points, %zu evaluations, status %s\n", r.front.size(), r.evaluations,
+              r.status.c_str());
 
   std::vector<std::vector<double>> f;
   for (std::size_t i = 0; i < r.front.size(); ++i) {
