@@ -5,6 +5,8 @@
 //    and a coarser one, with the parts of one evaluation timed alone;
 //  * the whole rack_railway_sizing study (run_study: evaluations, SQLite
 //    record, evaluations.csv; no report);
+//  * evaluations per second of the ship lift Pareto problem, with and
+//    without its wear metrics;
 //  * the 20-point ship lift Pareto front of studies/ship_lift_wear_tradeoff.yaml
 //    (one run per repetition: ~10 s each).
 //   ./build/study_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
@@ -171,6 +173,33 @@ void BM_SizingStiffnessCurve(benchmark::State& state) {
   rate_counters(state, 0);
 }
 BENCHMARK(BM_SizingStiffnessCurve)->Unit(benchmark::kMillisecond);
+
+// StudyProblem::evaluate of the ship lift Pareto spec at distinct designs
+// (both modules in turn). Arg 0: as shipped (wear_life_at_R(0.9) by the
+// exact quantile map, wear_life, stiffness, stresses); 1: the same without
+// the two wear metrics, so the difference is the wear model's share.
+void BM_ShipLiftEvaluate(benchmark::State& state) {
+  st::StudySpec spec = st::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml");
+  if (state.range(0) != 0) {
+    auto wear = [](const std::string& label) { return label.rfind("wear_life", 0) == 0; };
+    std::erase_if(spec.objectives, [&](const st::ObjectiveSpec& o) { return wear(o.label); });
+    std::erase_if(spec.report_metrics,
+                  [&](const rackopt::metrics::MetricRequest& m) { return wear(rackopt::metrics::to_string(m)); });
+  }
+  const st::StudyProblem base(spec);
+  std::vector<st::StudyProblem> views;
+  for (std::size_t c = 0; c < base.num_combinations(); ++c) views.push_back(base.for_combination(c));
+  Points points(base.dimension());
+  std::size_t k = 0, failed = 0;
+  for (auto _ : state) {
+    const rackopt::solvers::Evaluation e = views[k++ % views.size()].evaluate(points.next());
+    failed += e.ok() ? 0 : 1;
+    benchmark::DoNotOptimize(e.objectives.data());
+  }
+  state.SetLabel(state.range(0) != 0 ? "without wear metrics" : "as shipped");
+  rate_counters(state, failed);
+}
+BENCHMARK(BM_ShipLiftEvaluate)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // A whole study through run_study into a fresh folder (removed between
 // iterations, outside the timing). Counters: evaluations of one run and
