@@ -18,7 +18,7 @@ namespace rackopt::cli {
 int cmd_wear(const Args& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const Drive drive = load_problem(a.file, a.overrides);
-  WearReliabilityOptions opt;
+  WearReliabilityOptions opt = wear_reliability_options(drive);
   opt.samples = a.samples;
   opt.seed = a.seed;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;

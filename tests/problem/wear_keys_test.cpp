@@ -395,6 +395,29 @@ TEST(WearErrors, TimesListsAndUnits) {
                {14, 18, "reliability.times[1]", "allowed: 0 yr < times"});
 }
 
+TEST(WearKeys, LifeAtRFidelityKnobs) {
+  // Defaults are the documented ones (docs/yaml.md, reliability).
+  const Drive d = load_problem_text(kWear, "t.yaml");
+  EXPECT_EQ(d.reliability.bootstrap_replicates, 100);
+  EXPECT_TRUE(d.reliability.life_table);
+  EXPECT_DOUBLE_EQ(d.reliability.life_table_tolerance, 5e-4);
+  const Drive e = load_problem_text(kWear +
+                                        "reliability:\n"
+                                        "  bootstrap_replicates: 250\n"
+                                        "  life_table: off\n"
+                                        "  life_table_tolerance: 1e-3\n",
+                                    "t.yaml");
+  EXPECT_EQ(e.reliability.bootstrap_replicates, 250);
+  EXPECT_FALSE(e.reliability.life_table);
+  EXPECT_DOUBLE_EQ(e.reliability.life_table_tolerance, 1e-3);
+  expect_error(kWear +
+                   "reliability:\n"                    // 13
+                   "  bootstrap_replicates: 5\n",      // 14, value at column 25
+               {14, 25, "reliability.bootstrap_replicates", "allowed: 20"});
+  expect_error(kWear, {0, 0, "reliability.life_table_tolerance", "allowed", "<command line>"},
+               {"reliability.life_table_tolerance=0.5"});
+}
+
 TEST(WearErrors, TableDepthsNotAscending) {
   expect_error(kDrive +
                    "wear:\n"                            // 10

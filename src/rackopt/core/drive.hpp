@@ -200,6 +200,10 @@ struct ReliabilitySpec {
   std::vector<double> reliabilities;      // R values for life at R
   std::vector<double> times;              // [s] times at which R(t) is reported
   double ks_level = 0.05;                 // Kolmogorov-Smirnov significance level
+  // Fidelity knobs of the life-at-R computation (docs/accuracy.md, wear):
+  int bootstrap_replicates = 100;         // parametric bootstrap for KS critical values and fit intervals
+  bool life_table = true;                 // one random input: verified table of life(input)
+  double life_table_tolerance = 5e-4;     // relative midpoint check of every table interval
 };
 
 struct Drive {

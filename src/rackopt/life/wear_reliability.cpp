@@ -71,6 +71,14 @@ WearSample wear_sample_for(const Drive& d, const std::vector<RandomInput>& input
   return s;
 }
 
+WearReliabilityOptions wear_reliability_options(const Drive& drive) {
+  WearReliabilityOptions o;
+  o.bootstrap_replicates = drive.reliability.bootstrap_replicates;
+  o.life_table = drive.reliability.life_table;
+  o.life_table_tolerance = drive.reliability.life_table_tolerance;
+  return o;
+}
+
 WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabilityOptions& opt) {
   const SourceMark where{drive.source_file, 0, 0};
   if (!(drive.wear.coefficient > 0)) {

@@ -46,6 +46,12 @@ struct WearReliabilityOptions {
   int life_table_max_evaluations = 96;    // model lives the table may use
 };
 
+// The options a problem asks for: bootstrap_replicates, life_table and
+// life_table_tolerance from its `reliability` section (everything else at
+// the defaults above). Callers then override what the command line or a
+// study sets.
+WearReliabilityOptions wear_reliability_options(const Drive& drive);
+
 // How the one-input life table was used (empty when it was not).
 struct LifeTableReport {
   bool used = false;

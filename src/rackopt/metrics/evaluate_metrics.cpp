@@ -178,7 +178,8 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   if (reliability) {
     const std::size_t n_inputs = drive.reliability.inputs.size();
     const bool monte_carlo = n_inputs >= 2 || (n_inputs == 1 && !o.exact_quantile);
-    if (monte_carlo && o.bootstrap_replicates < 20) missing("bootstrap_replicates", "must be >= 20");
+    if (monte_carlo && o.bootstrap_replicates != 0 && o.bootstrap_replicates < 20)
+      missing("bootstrap_replicates", "must be 0 (the problem's reliability.bootstrap_replicates) or >= 20");
   }
 }
 
@@ -253,11 +254,11 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       Drive d = drive;
       d.reliability.reliabilities = rel.reliabilities;
       d.reliability.times.clear();
-      WearReliabilityOptions ro;
+      WearReliabilityOptions ro = wear_reliability_options(drive);
       ro.samples = exact ? 1 : o.reliability_samples;
       ro.seed = o.reliability_seed;
       ro.threads = std::max(1u, o.threads);
-      ro.bootstrap_replicates = o.bootstrap_replicates;
+      if (o.bootstrap_replicates > 0) ro.bootstrap_replicates = o.bootstrap_replicates;
       const WearReliabilityResult r = run_wear_reliability(d, ro);
       nominal = r.nominal;
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {

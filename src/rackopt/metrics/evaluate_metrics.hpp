@@ -54,7 +54,7 @@ struct MetricOptions {
   bool exact_quantile = true;      // one random input: life at R from its quantile (no sampling error)
   long reliability_samples = -1;   // Monte Carlo path: > 0 overrides reliability.samples
   long reliability_seed = -1;      // >= 0 overrides reliability.seed (common random numbers either way)
-  int bootstrap_replicates = 200;  // Monte Carlo path: KS test and fit choice (>= 20)
+  int bootstrap_replicates = 0;    // Monte Carlo path: KS test and fit choice (>= 20); 0 = reliability.bootstrap_replicates of the problem
   unsigned threads = 1;            // Monte Carlo path threads; results do not depend on it
 };
 

@@ -102,6 +102,8 @@ constexpr KeySpec kKeySpecs[] = {
     {"reliability.samples", QuantityKind::kCount, 1, 1e6, false, false},
     {"reliability.seed", QuantityKind::kCount, 0, 2e9, false, false},
     {"reliability.ks_level", QuantityKind::kDimensionless, 0.001, 0.5, false, false},
+    {"reliability.bootstrap_replicates", QuantityKind::kCount, 20, 100000, false, false},
+    {"reliability.life_table_tolerance", QuantityKind::kDimensionless, 1e-6, 0.05, false, false},
     {"reliability.R[]", QuantityKind::kDimensionless, 0, 1, true, true},
     {"reliability.times[]", QuantityKind::kTime, 0, kInf, true, true},
 };
@@ -752,7 +754,8 @@ RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
 
 void read_reliability(const Block& top, Drive& drive) {
   const Block r(top.get("reliability"), "reliability", "reliability", top.key_mark("reliability"),
-                {"samples", "seed", "sampling", "R", "times", "ks_level", "random"});
+                {"samples", "seed", "sampling", "R", "times", "ks_level", "bootstrap_replicates", "life_table",
+                 "life_table_tolerance", "random"});
   ReliabilitySpec& rel = drive.reliability;
   const ReliabilitySpec defaults;
   rel.samples = r.count("samples", defaults.samples);
@@ -761,6 +764,9 @@ void read_reliability(const Block& top, Drive& drive) {
   for (const auto& v : quantity_list(r, "R", "reliability.R[]")) rel.reliabilities.push_back(v.si);
   for (const auto& v : quantity_list(r, "times", "reliability.times[]")) rel.times.push_back(v.si);
   rel.ks_level = r.number("ks_level", defaults.ks_level);
+  rel.bootstrap_replicates = r.count("bootstrap_replicates", defaults.bootstrap_replicates);
+  rel.life_table = r.flag("life_table", defaults.life_table);
+  rel.life_table_tolerance = r.number("life_table_tolerance", defaults.life_table_tolerance);
   const MarkedNode* random = r.get("random");
   if (random == nullptr) return;
   if (random->type != MarkedNode::Type::kSequence) {

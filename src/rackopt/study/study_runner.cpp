@@ -508,14 +508,15 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
       result.best = run.to_result(start->design, "start");
       status = start->design.evaluation.ok() ? "ok" : "all_failed";
       if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok() && !run.stop_requested()) {
-        WearReliabilityOptions wo;
-        wo.samples = spec.metric_options.reliability_samples;
-        wo.seed = spec.metric_options.reliability_seed;
-        wo.threads = run.threads();
-        wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
         try {
-          result.reliability = std::make_shared<const WearReliabilityResult>(
-              run_wear_reliability(base.drive_at(start->design.x), wo));
+          const Drive design = base.drive_at(start->design.x);
+          WearReliabilityOptions wo = wear_reliability_options(design);
+          wo.samples = spec.metric_options.reliability_samples;
+          wo.seed = spec.metric_options.reliability_seed;
+          wo.threads = run.threads();
+          if (spec.metric_options.bootstrap_replicates > 0)
+            wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
+          result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
         } catch (const DesignError& e) {
           status = "all_failed";
           result.solver_message = std::string("wear reliability: ") + e.what();
