@@ -17,6 +17,7 @@
 
 #include "cli.hpp"
 #include "rackopt/core/progress_bar.hpp"
+#include "rackopt/output/wear_report.hpp"
 #include "rackopt/report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
@@ -116,6 +117,7 @@ std::string text_for_people(const study::StudySpec& spec, const study::StudyResu
       << ":\n";
     design_lines(o, spec, *r.best);
   }
+  if (r.reliability && r.best_drive) o << rackopt::wear_summary(*r.best_drive, *r.reliability);
   if (spec.kind == study::StudyKind::kSweep && !r.sweep_points.empty()) {
     // The response range of every metric over the points that computed it:
     // the first thing one wants to know of a sweep.

@@ -126,6 +126,8 @@ TEST(WearCli, SamplesAndSeedOptionsAreReproducible) {
   const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
   EXPECT_EQ(ja["reliability"], jb["reliability"]);
   EXPECT_EQ(ja["life_at_R"], jb["life_at_R"]);
+  EXPECT_EQ(ja["seed"].get<long>(), 7);  // the seed in effect, not the problem's
+  EXPECT_EQ(ja["samples"].get<long>(), 50);
   const CliResult c = run("wear problems/ship_lift.yaml --json --samples 50 --seed 8 --out " + tmp_dir("c"));
   ASSERT_EQ(c.code, 0);
   EXPECT_NE(ja["reliability"], nlohmann::json::parse(c.out)["reliability"]);

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -514,6 +515,14 @@ TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   }
   // one row per Monte Carlo sample
   EXPECT_EQ(read_csv(dir + "/life_samples.csv").size(), wr->lives.size() + 1);
+  // The wear analysis itself is in the summary, as `rackopt wear --json` has it.
+  ASSERT_TRUE(j.contains("reliability"));
+  EXPECT_EQ(j["reliability"]["life_years"].get<double>(), wr->nominal.life_years);
+  EXPECT_EQ(j["reliability"]["reliability"].size(), drive->reliability.times.size());
+  EXPECT_EQ(j["reliability"]["life_at_R"].size(), drive->reliability.reliabilities.size());
+  std::ifstream md(dir + "/report.md");
+  const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Wear life and reliability of the design"), std::string::npos);
   if (gnuplot_available()) {
     EXPECT_TRUE(j["files"].contains("reliability_png"));
   }

@@ -114,6 +114,8 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   unsigned threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
   out.threads_used = threads;
+  out.seed_used = seed;
+  out.samples_used = static_cast<long>(n);
   out.criteria.assign(n, std::string());
 
   auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };

@@ -14,6 +14,7 @@
 //   r.nominal.life_years; r.summary.life[0].fit->estimate / kSecondsPerYear;
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,6 +98,8 @@ struct WearReliabilityResult {
   // interpolating); fit_ms: summary + exact map, of which exact_ms the map.
   double nominal_ms = 0, samples_ms = 0, fit_ms = 0, exact_ms = 0;
   unsigned threads_used = 1;
+  std::uint64_t seed_used = 0;  // the Monte Carlo seed in effect (options.seed, else reliability.seed)
+  long samples_used = 0;        // the sample count in effect
 };
 
 // Throws InputError when wear, duty or reliability is not configured enough

@@ -34,6 +34,11 @@ JsonWriter& JsonWriter::begin_array() {
   first_.push_back(true);
   return *this;
 }
+JsonWriter& JsonWriter::raw(const std::string& json_value) {
+  separator();
+  out_ += json_value;
+  return *this;
+}
 JsonWriter& JsonWriter::end_array() {
   out_ += ']';
   first_.pop_back();

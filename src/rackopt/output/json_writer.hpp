@@ -22,6 +22,9 @@ class JsonWriter {
   JsonWriter& value(const std::string& v);
   JsonWriter& value(const char* v) { return value(std::string(v)); }
   JsonWriter& null();
+  // A value that is already JSON text (one complete value, e.g. an object
+  // another writer produced), inserted as is.
+  JsonWriter& raw(const std::string& json_value);
   const std::string& str() const { return out_; }
 
   static std::string escape(const std::string& s);

@@ -184,7 +184,7 @@ std::string wear_summary(const Drive& d, const WearReliabilityResult& r) {
   if (!r.lives.empty()) {
     const auto& s = r.summary;
     o << "  Monte Carlo: " << r.lives.size() << " samples (" << (d.reliability.sobol ? "Sobol" : "pseudo-random")
-      << ", seed " << d.reliability.seed << ", " << r.threads_used << " threads), " << s.failed_evaluations
+      << ", seed " << r.seed_used << ", " << r.threads_used << " threads), " << s.failed_evaluations
       << " failed evaluations, " << s.immediate_failures << " immediate failures\n";
     if (const reliability::CandidateFit* c = s.chosen_fit()) {
       o << "    life distribution: " << c->fit->distribution.describe() << " (s), KS D = "
@@ -235,6 +235,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("contact_ratio_final").value(n.final_contact_ratio);
   const reliability::ReliabilitySummary& s = r.summary;
   j.key("samples").value(static_cast<long>(r.lives.size()));
+  j.key("seed").value(static_cast<long>(r.seed_used));
   j.key("failed_evaluations").value(static_cast<long>(s.failed_evaluations));
   j.key("immediate_failures").value(static_cast<long>(s.immediate_failures));
   j.key("life_at_R").begin_object();

@@ -653,6 +653,11 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     o << "Sweep: " << result.sweep_points.size() << " points, " << feasible << " feasible.\n\n";
   }
 
+  if (result.reliability && result.best_drive) {
+    o << "### Wear life and reliability of the design\n\n```\n"
+      << wear_summary(*result.best_drive, *result.reliability) << "```\n\n";
+  }
+
   o << "## Counts and timings\n\n";
   const std::size_t fresh = result.evaluations >= result.reused_evaluations
                                 ? result.evaluations - result.reused_evaluations
@@ -827,6 +832,19 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
     for (const auto& d : result.sweep_points) feasible += d.feasible ? 1 : 0;
     j.key("sweep_points").value(static_cast<long>(result.sweep_points.size()));
     j.key("feasible_points").value(static_cast<long>(feasible));
+  }
+  if (result.reliability && result.best_drive) {
+    // The same object `rackopt wear --json` prints for this design: life,
+    // life at R, R(t), the chosen fit with its KS statistic, exact quantiles.
+    WearFiles wf;
+    wf.wear_profile_csv = files.get("wear_profile_csv");
+    wf.life_samples_csv = files.get("life_samples_csv");
+    wf.reliability_csv = files.get("reliability_csv");
+    wf.histogram_csv = files.get("life_histogram_csv");
+    wf.wear_profile_png = files.get("wear_profile_png");
+    wf.histogram_png = files.get("life_histogram_png");
+    wf.reliability_png = files.get("reliability_png");
+    j.key("reliability").raw(wear_json(*result.best_drive, *result.reliability, wf, 0.0));
   }
   j.key("evaluations").value(static_cast<long>(result.evaluations));
   j.key("failed_evaluations").value(static_cast<long>(result.failed_evaluations));
