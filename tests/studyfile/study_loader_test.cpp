@@ -67,7 +67,8 @@ const std::string kOptimize = kHead +
 // ------------------------------------------------------------------ shipped
 
 TEST(StudyLoader, ShippedStudiesLoad) {
-  for (const char* name : {"rack_railway_sizing.yaml", "ship_lift_wear_tradeoff.yaml", "spall_severity_sweep.yaml"}) {
+  for (const char* name : {"rack_railway_sizing.yaml", "ship_lift_wear_tradeoff.yaml", "spall_severity_sweep.yaml",
+                           "ship_lift_reliability.yaml"}) {
     SCOPED_TRACE(name);
     StudySpec s;
     ASSERT_NO_THROW(s = load_study_file(kStudies + "/" + name)) << name;
