@@ -18,6 +18,7 @@
 #include "cli.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/record/evaluation_store.hpp"
 
 namespace {
 
@@ -91,6 +92,8 @@ int main(int argc, char** argv) {
     return fail(kBadInput, "input", e.what());
   } catch (const rackopt::DesignError& e) {
     return fail(kBadInput, "design:" + e.code(), std::string("impossible design (") + e.code() + "): " + e.what());
+  } catch (const rackopt::record::OutputFolderConflict& e) {
+    return fail(kBadInput, "output_folder", e.what());
   } catch (const std::exception& e) {
     return fail(kRunFailed, "run", std::string("run failed: ") + e.what());
   }

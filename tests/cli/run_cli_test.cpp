@@ -292,8 +292,15 @@ TEST(RunCli, UsedFolderWithoutResumeIsRefused) {
                       << "report: [contact_ratio]\n";
   ASSERT_EQ(run("run '" + path + "' --out " + dir + "/out", dir).code, 0);
   const CliResult again = run("run '" + path + "' --out " + dir + "/out", dir);
-  EXPECT_NE(again.code, 0);
+  EXPECT_EQ(again.code, 2);  // a user decision, like bad input: --resume or another --out
   EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
+  // Another study in the same folder is refused the same way.
+  std::ofstream(path) << "study: {name: tiny, kind: evaluate}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "report: [contact_ratio, supports_per_metre]\n";
+  const CliResult other = run("run '" + path + "' --out " + dir + "/out --resume", dir);
+  EXPECT_EQ(other.code, 2);
+  EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
 }
 
 }  // namespace

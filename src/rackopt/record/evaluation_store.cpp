@@ -347,7 +347,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
   if (count > 0) {
     const auto stored = read_meta(kFingerprintKey).value_or("");
     if (stored != study_fingerprint) {
-      throw std::runtime_error("'" + path + "' holds " + std::to_string(count) +
+      throw OutputFolderConflict("'" + path + "' holds " + std::to_string(count) +
                                " evaluations of another study (fingerprint " + stored + ", this study " +
                                study_fingerprint +
                                "): the study or problem definition changed since they were recorded. "
@@ -355,7 +355,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
                                "' to start this study afresh.");
     }
     if (!resume) {
-      throw std::runtime_error("'" + path + "' already holds " + std::to_string(count) +
+      throw OutputFolderConflict("'" + path + "' already holds " + std::to_string(count) +
                                " evaluations of this study. Pass --resume to continue it (recorded "
                                "evaluations are reused, not recomputed), or choose another --out folder.");
     }
@@ -366,7 +366,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
     }
     if (step != SQLITE_DONE) fail("reading variable names", step);
     if (variables != variable_names) {
-      throw std::runtime_error("'" + path + "' records other design variables than this study (same "
+      throw OutputFolderConflict("'" + path + "' records other design variables than this study (same "
                                "fingerprint but different names or order); choose another --out folder.");
     }
     failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));

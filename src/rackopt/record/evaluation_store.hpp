@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,15 @@ struct RecordedEvaluation {
   std::string message;  // why a failed evaluation failed (may be set for ok ones too)
   bool gradient_probe = false;  // made for a finite-difference gradient
   double seconds = 0;           // wall time of the evaluation
+};
+
+// The output folder already holds results this run may not touch: another
+// study's evaluations, this study's without resume, or other design
+// variables. A user decision (another --out, --resume, delete the file),
+// not a failure of the run: the CLI exits 2 with the message.
+class OutputFolderConflict : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // When buffered appends become durable (see EvaluationStore::append).
