@@ -259,6 +259,10 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       ro.seed = o.reliability_seed;
       ro.threads = std::max(1u, o.threads);
       if (o.bootstrap_replicates > 0) ro.bootstrap_replicates = o.bootstrap_replicates;
+      // Exact path: the life at R is one direct life at the input's quantile
+      // and no R(t) is asked for, so a life table (about 11 model lives)
+      // would cost more than the one sample it serves (9.4 ms vs 3 ms).
+      if (exact) ro.life_table = false;
       const WearReliabilityResult r = run_wear_reliability(d, ro);
       nominal = r.nominal;
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
