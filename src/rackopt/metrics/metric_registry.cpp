@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/suggest.hpp"
 
 namespace rackopt::metrics {
 namespace {
@@ -98,20 +99,6 @@ std::vector<MetricDefinition> build_registry() {
                "S_H = allowable contact stress (weaker member) / contact stress", stress, kContactBits,
                "interference_limit", true, {}, "ISO 6336-2 S_H = sigma_HP / sigma_H"});
   return r;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
 }
 
 [[noreturn]] void bad_metric(const std::string& message) {

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
 
 namespace rackopt {
@@ -115,36 +116,6 @@ const KeySpec* find_spec(std::string_view pattern) {
   return nullptr;
 }
 
-// Edit distance, for "did you mean" suggestions.
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-std::string join(const std::vector<std::string>& names, const std::string& separator = ", ") {
-  std::string out;
-  for (const auto& n : names) {
-    if (!out.empty()) out += separator;
-    out += n;
-  }
-  return out;
-}
-
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 std::string format_in_kind(double si, QuantityKind kind) {
   if (kind == QuantityKind::kCount) return format_number(si, 10);
   return format_quantity(si, kind);
@@ -175,82 +146,13 @@ void check_value_range(const SourceMark& where, const std::string& path, const s
 // One map of the problem (a section such as `pinion`, one material, one
 // fault). Rejects unknown keys on construction; reads typed values with
 // defaults and ranges; reports missing keys at the map's own mark.
-class Block {
+class Block : public MarkedMap {
  public:
   // `node` may be nullptr or null (section absent or empty): then every key
   // is absent and errors point at `fallback` (the parent's mark).
   Block(const MarkedNode* node, std::string path, std::string pattern, const SourceMark& fallback,
         std::vector<std::string> allowed)
-      : node_(node), path_(std::move(path)), pattern_(std::move(pattern)), mark_(fallback),
-        allowed_(std::move(allowed)) {
-    if (node_ != nullptr && node_->is_null()) node_ = nullptr;
-    if (node_ == nullptr) return;
-    mark_ = node_->mark;
-    if (!node_->is_map()) {
-      throw InputError(node_->mark, path_,
-                       "expected a map of keys (" + join(allowed_) + "), found " + node_->type_name());
-    }
-    if (allowed_.empty()) return;  // free-form names (materials, variants)
-    for (const auto& e : node_->entries) {
-      if (std::find(allowed_.begin(), allowed_.end(), e.key) != allowed_.end()) continue;
-      std::string message = "unknown key '" + e.key + "'";
-      message += path_.empty() ? " at the top level" : " in " + path_;
-      const std::string* best = nullptr;
-      std::size_t best_distance = 0;
-      for (const auto& candidate : allowed_) {
-        const std::size_t d = edit_distance(lower(e.key), lower(candidate));
-        if (best == nullptr || d < best_distance) {
-          best = &candidate;
-          best_distance = d;
-        }
-      }
-      if (best != nullptr && best_distance <= std::max<std::size_t>(2, e.key.size() / 3)) {
-        message += "; did you mean '" + *best + "'?";
-      }
-      message += " Allowed keys: " + join(allowed_);
-      throw InputError(e.key_mark, child_path(e.key), message);
-    }
-  }
-
-  const MarkedNode* node() const { return node_; }
-  const SourceMark& mark() const { return mark_; }
-  const std::string& path() const { return path_; }
-  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  // Present and not null.
-  const MarkedNode* get(const std::string& key) const {
-    if (node_ == nullptr) return nullptr;
-    const MarkedNode* v = node_->find(key);
-    return (v == nullptr || v->is_null()) ? nullptr : v;
-  }
-  bool has(const std::string& key) const { return get(key) != nullptr; }
-
-  SourceMark key_mark(const std::string& key) const {
-    if (node_ != nullptr) {
-      for (const auto& e : node_->entries) {
-        if (e.key == key) return e.key_mark;
-      }
-    }
-    return mark_;
-  }
-
-  [[noreturn]] void missing(const std::string& key, const std::string& expected) const {
-    throw InputError(mark_, child_path(key), "required key '" + key + "' is missing; expected " + expected);
-  }
-
-  // The scalar text of `key`; nullopt when absent. `expected` names the kind for messages.
-  std::optional<std::pair<std::string, SourceMark>> scalar(const std::string& key, const std::string& expected) const {
-    const MarkedNode* v = get(key);
-    if (v == nullptr) {
-      // A key written with an empty value is absent (`key:` or `key: ~`),
-      // except that a required key then gets the "missing" message.
-      return std::nullopt;
-    }
-    if (v->type != MarkedNode::Type::kScalar) {
-      throw InputError(v->mark, child_path(key), "expected " + expected + ", found " + v->type_name());
-    }
-    return std::make_pair(v->scalar, v->mark);
-  }
+      : MarkedMap(node, std::move(path), fallback, std::move(allowed)), pattern_(std::move(pattern)) {}
 
   const KeySpec& spec(const std::string& key) const {
     const KeySpec* s = find_spec(pattern_.empty() ? key : pattern_ + "." + key);
@@ -324,35 +226,17 @@ class Block {
     return parse_quantity(text->first, kind, text->second, child_path(key), bare_unit);
   }
 
-  bool flag(const std::string& key, bool fallback) const {
-    const auto text = scalar(key, "on or off");
-    if (!text) return fallback;
-    const std::string t = lower(text->first);
-    if (t == "on" || t == "true" || t == "yes") return true;
-    if (t == "off" || t == "false" || t == "no") return false;
-    throw InputError(text->second, child_path(key), "'" + text->first + "' is not a switch; allowed: on, off (or true, false)");
-  }
-
   std::string choice(const std::string& key, const std::vector<std::string>& options, const std::string& fallback) const {
-    const auto text = scalar(key, "one of " + join(options, " | "));
+    const auto text = scalar(key, "one of " + join_names(options, " | "));
     if (!text) return fallback;
     for (const auto& o : options) {
       if (text->first == o) return o;
     }
-    throw InputError(text->second, child_path(key), "'" + text->first + "' is not allowed; allowed: " + join(options, " | "));
-  }
-
-  std::string text(const std::string& key, const std::string& fallback) const {
-    const auto t = scalar(key, "a text");
-    return t ? t->first : fallback;
+    throw InputError(text->second, child_path(key), "'" + text->first + "' is not allowed; allowed: " + join_names(options, " | "));
   }
 
  private:
-  const MarkedNode* node_;
-  std::string path_;
   std::string pattern_;
-  SourceMark mark_;
-  std::vector<std::string> allowed_;
 };
 
 const std::vector<std::string> kTopKeys = {"name",      "description", "variant", "variants",  "pinion",
@@ -367,7 +251,7 @@ Material find_material(const std::map<std::string, Material>& materials, const B
   std::vector<std::string> names;
   for (const auto& [n, m] : materials) names.push_back(n);
   throw InputError(name ? name->second : block.mark(), block.child_path(key),
-                   "unknown material '" + wanted + "'; defined: " + join(names) +
+                   "unknown material '" + wanted + "'; defined: " + join_names(names) +
                        " (add it under materials: {" + wanted + ": {E: ..., nu: ...}})");
 }
 
@@ -488,7 +372,7 @@ HardnessProfile read_hardness(const MarkedNode& node, const std::string& path) {
     if (std::find(own.begin(), own.end(), e.key) == own.end()) {
       throw InputError(e.key_mark, b.child_path(e.key),
                        "key '" + e.key + "' does not belong to a '" + kind + "' hardness profile; its keys: " +
-                           join(own));
+                           join_names(own));
     }
   }
   // Units of bare numbers in measured data (lists and polynomial coefficients).
@@ -690,14 +574,14 @@ RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
                 {"input", "distribution", "mean", "sd", "median", "sigma", "lower", "upper", "scale", "shape"});
   std::vector<std::string> inputs;
   for (const auto& r : kRandomInputs) inputs.emplace_back(r.name);
-  if (!b.has("input")) b.missing("input", "the uncertain input: " + join(inputs, " | "));
+  if (!b.has("input")) b.missing("input", "the uncertain input: " + join_names(inputs, " | "));
   const std::string input = b.choice("input", inputs, "");
   const RandomInputKind* which = nullptr;
   for (const auto& r : kRandomInputs) {
     if (input == r.name) which = &r;
   }
   const std::vector<std::string> distributions = {"normal", "lognormal", "uniform", "weibull"};
-  if (!b.has("distribution")) b.missing("distribution", "one of " + join(distributions, " | "));
+  if (!b.has("distribution")) b.missing("distribution", "one of " + join_names(distributions, " | "));
   const std::string distribution = b.choice("distribution", distributions, "");
 
   RandomInput out;
@@ -1169,7 +1053,7 @@ ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& n
   throw InputError(where, "variant",
                    "unknown variant '" + wanted + "'; " +
                        (names.empty() ? std::string("this problem defines no variants")
-                                      : "defined: " + join(names)));
+                                      : "defined: " + join_names(names)));
 }
 
 Drive drive_from_tree(const ProblemTree& tree) {

@@ -17,6 +17,8 @@
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/design_point.hpp"
+#include "rackopt/core/suggest.hpp"
+#include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/solvers/problem.hpp"
@@ -31,33 +33,9 @@ constexpr const char* kCommandLine = "<command line>";
 
 // ---------------------------------------------------------------- text helpers
 
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0u : 1u)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string lower(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
-}
-
-std::string join(const std::vector<std::string>& names, const std::string& separator = ", ") {
-  std::string out;
-  for (const auto& n : names) {
-    if (!out.empty()) out += separator;
-    out += n;
-  }
-  return out;
 }
 
 std::string trim(std::string_view s) {
@@ -67,19 +45,10 @@ std::string trim(std::string_view s) {
   return std::string(s.substr(b, e - b));
 }
 
-// The candidate closest to `word` when it is a near miss (the problem
-// loader's rule: edit distance <= max(2, a third of the word)).
-std::optional<std::string> near_miss(const std::string& word, const std::vector<std::string>& candidates) {
-  const std::string* best = nullptr;
-  std::size_t best_distance = 0;
-  for (const auto& c : candidates) {
-    const std::size_t d = edit_distance(lower(word), lower(c));
-    if (best == nullptr || d < best_distance) {
-      best = &c;
-      best_distance = d;
-    }
-  }
-  if (best != nullptr && best_distance <= std::max<std::size_t>(2, word.size() / 3)) return *best;
+// The candidate closest to `word` when it is a near miss (closest_name, the
+// rule of every loader), or else one it abbreviates.
+std::optional<std::string> near_miss(std::string_view word, const std::vector<std::string>& candidates) {
+  if (auto best = closest_name(word, candidates)) return best;
   // An abbreviation ("max_evals" for "max_evaluations"): a long common start.
   const std::string* longest = nullptr;
   std::size_t longest_prefix = 0;
@@ -110,90 +79,20 @@ std::string format_in(double si, QuantityKind kind, std::string_view unit = {}) 
 // One map of the study file. Rejects unknown keys on construction (with
 // "did you mean"), reads typed values, and reports missing keys at the map's
 // own mark. Same behaviour as the problem loader's sections.
-class Section {
+class Section : public MarkedMap {
  public:
   Section(const MarkedNode* node, std::string path, const SourceMark& fallback, std::vector<std::string> allowed,
           const std::string& example = {})
-      : node_(node), path_(std::move(path)), mark_(fallback), allowed_(std::move(allowed)) {
-    if (node_ != nullptr && node_->is_null()) node_ = nullptr;
-    if (node_ == nullptr) return;
-    mark_ = node_->mark;
-    if (!node_->is_map()) {
-      throw InputError(node_->mark, path_,
-                       "expected a map of keys (" + join(allowed_) + ")" + (example.empty() ? "" : ", e.g. " + example) +
-                           ", found " + node_->type_name());
-    }
-    for (const auto& e : node_->entries) {
-      if (std::find(allowed_.begin(), allowed_.end(), e.key) != allowed_.end()) continue;
-      std::string message = "unknown key '" + e.key + "'";
-      message += path_.empty() ? " at the top level" : " in " + path_;
-      if (const auto best = near_miss(e.key, allowed_)) message += "; did you mean '" + *best + "'?";
-      message += " Allowed keys: " + join(allowed_);
-      throw InputError(e.key_mark, child_path(e.key), message);
-    }
-  }
-
-  bool present() const { return node_ != nullptr; }
-  const SourceMark& mark() const { return mark_; }
-  const std::string& path() const { return path_; }
-  std::string child_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  const MarkedNode* get(const std::string& key) const {
-    if (node_ == nullptr) return nullptr;
-    const MarkedNode* v = node_->find(key);
-    return (v == nullptr || v->is_null()) ? nullptr : v;
-  }
-  bool has(const std::string& key) const { return get(key) != nullptr; }
-
-  SourceMark key_mark(const std::string& key) const {
-    if (node_ != nullptr) {
-      for (const auto& e : node_->entries) {
-        if (e.key == key) return e.key_mark;
-      }
-    }
-    return mark_;
-  }
-  // Where the value is written, else where the key is, else the map.
-  SourceMark value_mark(const std::string& key) const {
-    if (const MarkedNode* v = get(key)) return v->mark;
-    return key_mark(key);
-  }
-
-  [[noreturn]] void missing(const std::string& key, const std::string& expected) const {
-    throw InputError(mark_, child_path(key), "required key '" + key + "' is missing; expected " + expected);
-  }
-
-  std::optional<std::pair<std::string, SourceMark>> scalar(const std::string& key, const std::string& expected) const {
-    const MarkedNode* v = get(key);
-    if (v == nullptr) return std::nullopt;
-    if (v->type != MarkedNode::Type::kScalar) {
-      throw InputError(v->mark, child_path(key), "expected " + expected + ", found " + v->type_name());
-    }
-    return std::make_pair(v->scalar, v->mark);
-  }
-
-  std::string text(const std::string& key, const std::string& fallback) const {
-    const auto t = scalar(key, "a text");
-    return t ? t->first : fallback;
-  }
-
-  bool flag(const std::string& key, bool fallback) const {
-    const auto t = scalar(key, "on or off");
-    if (!t) return fallback;
-    const std::string v = lower(t->first);
-    if (v == "on" || v == "true" || v == "yes") return true;
-    if (v == "off" || v == "false" || v == "no") return false;
-    throw InputError(t->second, child_path(key), "'" + t->first + "' is not a switch; allowed: on, off (or true, false)");
-  }
+      : MarkedMap(node, std::move(path), fallback, std::move(allowed), example, near_miss) {}
 
   // One of `options` (compared without case); nullopt when absent.
   std::optional<std::string> choice(const std::string& key, const std::vector<std::string>& options) const {
-    const auto t = scalar(key, "one of " + join(options, " | "));
+    const auto t = scalar(key, "one of " + join_names(options, " | "));
     if (!t) return std::nullopt;
     for (const auto& o : options) {
       if (lower(t->first) == lower(o)) return o;
     }
-    std::string message = "'" + t->first + "' is not allowed; allowed: " + join(options, " | ");
+    std::string message = "'" + t->first + "' is not allowed; allowed: " + join_names(options, " | ");
     if (const auto best = near_miss(t->first, options)) message += " (did you mean '" + *best + "'?)";
     throw InputError(t->second, child_path(key), message);
   }
@@ -368,7 +267,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
     std::string message = "'" + entry.key + "' is not a numeric problem key; a design variable is a number of the problem";
     const std::vector<std::string> examples = numeric_key_examples();
     if (const auto best = near_miss(entry.key, examples)) message += "; did you mean '" + *best + "'?";
-    message += ". Numeric keys include: " + join(examples) + " (docs/yaml.md)";
+    message += ". Numeric keys include: " + join_names(examples) + " (docs/yaml.md)";
     throw InputError(entry.key_mark, path, message);
   }
   v.kind = *kind;
@@ -445,7 +344,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
         std::vector<std::string> listed;
         for (double x : v.values) listed.push_back(format_in(x, v.kind, v.unit));
         throw InputError(start_site->mark, start_site->path,
-                         format_in(start_site->value, v.kind, v.unit) + " is not one of the values (" + join(listed) +
+                         format_in(start_site->value, v.kind, v.unit) + " is not one of the values (" + join_names(listed) +
                              "); the start of a discrete variable must be one of them");
       }
       v.start = *it;
@@ -704,13 +603,13 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
 
   // --- study -----------------------------------------------------------------
   const std::vector<std::string> kinds = {"evaluate", "sweep", "optimize", "pareto", "reliability"};
-  if (!top.has("study")) top.missing("study", "a map {name: ..., kind: " + join(kinds, " | ") + ", seed: 1}");
+  if (!top.has("study")) top.missing("study", "a map {name: ..., kind: " + join_names(kinds, " | ") + ", seed: 1}");
   const Section study(top.get("study"), "study", top.key_mark("study"), {"name", "kind", "seed", "description"},
                       "{kind: optimize, seed: 1}");
   spec.name = study.text("name", fs::path(name_for_messages).stem().string());
   spec.description = study.text("description", "");
   const auto kind_text = study.choice("kind", kinds);
-  if (!kind_text) study.missing("kind", "one of " + join(kinds, " | "));
+  if (!kind_text) study.missing("kind", "one of " + join_names(kinds, " | "));
   const std::size_t kind_index =
       static_cast<std::size_t>(std::find(kinds.begin(), kinds.end(), *kind_text) - kinds.begin());
   const StudyKind kind_values[] = {StudyKind::kEvaluate, StudyKind::kSweep, StudyKind::kOptimize, StudyKind::kPareto,
@@ -973,7 +872,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
       for (std::size_t i = 0; i < labels.size(); ++i) choices.push_back(std::to_string(i) + " = " + labels[i]);
       throw InputError(primary->second, "pareto.primary",
                        "'" + primary->first + "' is not one of the objectives; allowed: " +
-                           (choices.empty() ? std::string("(the study has no objectives)") : join(choices)));
+                           (choices.empty() ? std::string("(the study has no objectives)") : join_names(choices)));
     }
     spec.pareto.primary = *found;
   }
@@ -1098,7 +997,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
       if (total > static_cast<double>(spec.sweep.max_points)) {
         const SourceMark where = sw.has("levels") ? sw.value_mark("levels") : sw.present() ? sw.mark() : variables_mark;
         throw InputError(where, sw.has("levels") ? "sweep.levels" : "sweep",
-                         "the grid has " + format_number(total, 12) + " points (" + join(factors, " x ") +
+                         "the grid has " + format_number(total, 12) + " points (" + join_names(factors, " x ") +
                              "), more than sweep.max_points = " + std::to_string(spec.sweep.max_points) +
                              "; lower the levels, use method: lhs or sobol with fewer points, or raise max_points");
       }
@@ -1120,7 +1019,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
     }
     if (combinations > static_cast<double>(spec.max_discrete_combinations)) {
       throw InputError(variables_mark, "variables",
-                       "the discrete variables " + join(factors, " x ") + " make " + format_number(combinations, 12) +
+                       "the discrete variables " + join_names(factors, " x ") + " make " + format_number(combinations, 12) +
                            " combinations, each optimized separately; more than limits.max_discrete_combinations = " +
                            std::to_string(spec.max_discrete_combinations) +
                            "; drop values, make a variable continuous, or raise the limit");
