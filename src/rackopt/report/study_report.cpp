@@ -31,6 +31,11 @@ std::string ReportFiles::get(const std::string& role) const {
 
 namespace {
 
+std::size_t feasible_points(const StudyResult& r) {
+  return static_cast<std::size_t>(std::count_if(r.sweep_points.begin(), r.sweep_points.end(),
+                                                [](const DesignResult& p) { return p.feasible; }));
+}
+
 namespace fs = std::filesystem;
 
 // ---- units ------------------------------------------------------------------
@@ -648,8 +653,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     md_design(o, spec, *result.least_infeasible);
   }
   if (spec.kind == StudyKind::kSweep) {
-    std::size_t feasible = 0;
-    for (const auto& d : result.sweep_points) feasible += d.feasible ? 1 : 0;
+    const std::size_t feasible = feasible_points(result);
     o << "Sweep: " << result.sweep_points.size() << " points, " << feasible << " feasible.\n\n";
   }
 
@@ -742,8 +746,7 @@ std::string status_message(const StudySpec& spec, const StudyResult& r) {
     s = r.status + " after " + n + ".";
   }
   if (spec.kind == StudyKind::kSweep) {
-    const auto feasible = std::count_if(r.sweep_points.begin(), r.sweep_points.end(),
-                                        [](const DesignResult& p) { return p.feasible; });
+    const std::size_t feasible = feasible_points(r);
     s += " " + std::to_string(feasible) + " of " + std::to_string(r.sweep_points.size()) + " points feasible.";
   }
   if (spec.kind == StudyKind::kPareto) {
@@ -828,8 +831,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
     }
   }
   if (spec.kind == StudyKind::kSweep) {
-    std::size_t feasible = 0;
-    for (const auto& d : result.sweep_points) feasible += d.feasible ? 1 : 0;
+    const std::size_t feasible = feasible_points(result);
     j.key("sweep_points").value(static_cast<long>(result.sweep_points.size()));
     j.key("feasible_points").value(static_cast<long>(feasible));
   }
