@@ -302,3 +302,43 @@ TEST(EvaluateMetrics, ThreadSafeAndDeterministic) {
 
 }  // namespace
 }  // namespace rackopt::metrics
+
+namespace rackopt::metrics {
+namespace {
+
+// Every registered metric computes from the models it declares alone: asked
+// for by itself (so no other metric pulls in a model it forgot to declare),
+// it gives a finite value on the ship lift (which configures wear, duty,
+// reliability and allowables), never a "read an undeclared model" error.
+TEST(EvaluateMetrics, EveryRegisteredMetricComputesFromItsDeclaredModelsAlone) {
+  const Drive ship = problem("ship_lift");
+  for (const MetricDefinition& d : metric_registry()) {
+    MetricRequest q{std::string(d.name), std::nullopt};
+    if (d.parameter.use == ParameterSpec::Use::kRequired) q.parameter = 0.9;
+    const std::vector<MetricRequest> one{q};
+    MetricValues v;
+    ASSERT_NO_THROW(v = evaluate_metrics(ship, one)) << d.name;
+    EXPECT_TRUE(v.values.at(0).ok) << d.name << ": " << v.values.at(0).message;
+    EXPECT_TRUE(std::isfinite(v.values.at(0).value)) << d.name;
+    EXPECT_EQ(v.models_run, d.models) << d.name;
+  }
+}
+
+TEST(MetricRegistryCheck, AMetricWithoutComputationFailsAtStartUp) {
+  std::vector<MetricDefinition> r = metric_registry();
+  EXPECT_NO_THROW(check_registry(r));
+  r.back().compute = nullptr;
+  try {
+    check_registry(r);
+    ADD_FAILURE() << "no logic_error";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find(std::string(r.back().name)), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no computation"), std::string::npos) << e.what();
+  }
+  r = metric_registry();
+  r.push_back(r.front());
+  EXPECT_THROW(check_registry(r), std::logic_error);
+}
+
+}  // namespace
+}  // namespace rackopt::metrics

@@ -105,7 +105,8 @@ void expect_error(const std::string& text, K kind, const std::string& needle) {
 
 TEST(ParseQuantity, ErrorsNameTheProblemAndTheAllowedUnits) {
   // Unknown unit: the allowed ones are listed.
-  expect_error("14 kg", K::kAngle, "unknown unit 'kg' for an angle; allowed units: deg, rad, mrad");
+  expect_error("14 kg", K::kAngle, "'kg' is a unit of a mass but an angle is expected; allowed units: deg, rad, mrad");
+  expect_error("14 furlong", K::kAngle, "unknown unit 'furlong' for an angle; allowed units: deg, rad, mrad");
   // A unit that exists, but for another kind.
   expect_error("14 mm", K::kAngle, "'mm' is a unit of a length but an angle is expected");
   expect_error("50 GPa", K::kForce, "'GPa' is a unit of a modulus but a force is expected");
@@ -225,6 +226,25 @@ TEST(ParseQuantity, RatesInEveryUnit) {
   EXPECT_DOUBLE_EQ(parse_quantity("5 Hz", K::kRate), 5.0);
   EXPECT_DOUBLE_EQ(parse_quantity("5 1/s", K::kRate), 5.0);
   EXPECT_EQ(default_unit(K::kRate), "1/yr");
+}
+
+TEST(ParseQuantity, MassDensitySpeedPower) {
+  EXPECT_DOUBLE_EQ(parse_quantity("120 kg", K::kMass), 120.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("1.2 t", K::kMass), 1200.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("500 g", K::kMass), 0.5);
+  EXPECT_DOUBLE_EQ(parse_quantity("7850", K::kDensity), 7850.0);  // bare number: kg/m^3
+  EXPECT_DOUBLE_EQ(parse_quantity("7.85 g/cm^3", K::kDensity), 7850.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("7.85 t/m^3", K::kDensity), 7850.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("0.5", K::kSpeed), 0.5);  // bare number: m/s
+  EXPECT_DOUBLE_EQ(parse_quantity("90 m/min", K::kSpeed), 1.5);
+  EXPECT_DOUBLE_EQ(parse_quantity("36 km/h", K::kSpeed), 10.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("250 mm/s", K::kSpeed), 0.25);
+  EXPECT_DOUBLE_EQ(parse_quantity("2000 km/yr", K::kSpeed), 2e6 / kYear);
+  EXPECT_DOUBLE_EQ(parse_quantity("2000 m/yr", K::kSpeed), 2e3 / kYear);
+  EXPECT_DOUBLE_EQ(parse_quantity("15 kW", K::kPower), 15e3);
+  EXPECT_DOUBLE_EQ(parse_quantity("1.5 MW", K::kPower), 1.5e6);
+  EXPECT_EQ(format_quantity(1.5, K::kSpeed, "m/min", 4), "90 m/min");
+  EXPECT_THROW(parse_quantity("5 kg", K::kSpeed), InputError);
 }
 
 TEST(ParseQuantity, BareUnitOverridesTheKindDefault) {

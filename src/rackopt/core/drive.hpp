@@ -28,6 +28,7 @@ struct Material {
   // surface factor already applied; minimum safety factors are NOT in them.
   double allowable_bending = 0;   // sigma_FP, against the root stress sigma_F (incl. Y_S) [Pa]; 0 = not given
   double allowable_contact = 0;   // sigma_HP, against the flank stress sigma_H [Pa]; 0 = not given
+  double density = 7850;          // rho [kg/m^3], for the masses (docs/metrics.md, size metrics)
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
 };
 
@@ -80,9 +81,18 @@ struct Mounting {
 
 // The ISO 6336 load factors multiply the nominal load in the stress metrics
 // only; the stiffness and wear models use `force` as it is. All >= 1.
+//
+// The load is given one of three ways and the others follow from it:
+// normal force F_n along the line of action, pinion torque T = F_n r_b, or
+// rack thrust (tangential force along the rack) F_t = F_n cos a0 = T / r.
+// A study that varies the module or the pressure angle keeps whichever was
+// given fixed: the thrust is what a lift or a gantry axis asks for.
 struct Load {
-  double force = 0.0;   // normal mesh force along the line of action [N] (torque / r_b when given as torque)
-  double torque = 0.0;  // pinion torque [N*m] as given (0 when the force was given)
+  double force = 0.0;   // normal mesh force along the line of action [N] (derived when torque or thrust is given)
+  double torque = 0.0;  // pinion torque [N*m] as given (0 when force or thrust was given)
+  double thrust = 0.0;  // rack thrust F_t [N] as given (0 when force or torque was given)
+  double speed = 0.0;          // rack speed relative to the pinion axis [m/s]; 0 = not given (drive power needs it)
+  double efficiency = 1.0;     // of the drive train from motor to rack, (0, 1]; for the drive power
   double application_factor = 1.0;        // K_A
   double dynamic_factor = 1.0;            // K_V
   double face_load_factor = 1.0;          // K_Hbeta (contact)
@@ -114,6 +124,14 @@ struct Effects {
   bool body_shear = true;          // Timoshenko shear of the rack body
   bool interference_limit = true;  // false: ignore undercut/interference as seed 000 did
   bool spalling = true;            // apply the spalls listed in faults
+
+  // At least one compliance is modelled. With none the mesh is rigid: its
+  // stiffness is infinite and the load sharing undefined, so a problem that
+  // switches every one off is refused (docs/yaml.md, effects).
+  bool any_compliance() const {
+    return pinion_tooth || fillet_foundation || rack_tooth || hertz != HertzModel::kOff ||
+           rack_span != RackSpanModel::kRigid;
+  }
 };
 
 enum class Member { kPinion, kRack };
@@ -176,9 +194,19 @@ struct WearSpec {
 
 // How often the drive runs. A rack flank point meets a pinion once per
 // passage; a pinion flank point once per pinion revolution over the rack.
+//
+// Given directly (rack_meshes_per_year, optionally pinion_meshes_per_year) or
+// as travel: a stroke of length `stroke` passes every rack tooth inside it
+// once, so a rack tooth meets the pinion travel_per_year / stroke times a
+// year, and a pinion tooth meets the rack once per revolution, i.e. every
+// pi m z of travel: travel_per_year / (pi m z) times. Every stroke is counted
+// as loading the same flank (a lift's weight always loads one flank; for a
+// reversing axis this is the conservative count).
 struct Duty {
   double rack_meshes_per_year = 0;   // passages of a pinion over a given rack tooth per year (seed 004 n_L)
   double pinion_meshes_per_year = 0; // meshes of a given pinion tooth per year (0 = same as the rack's)
+  double travel_per_year = 0;        // pinion travel along the rack per year [m/yr]; 0 = duty given as mesh counts
+  double stroke = 0;                 // length of one stroke [m]; 0 = duty given as mesh counts
 };
 
 // One uncertain input for wear-life reliability (physics.md 12).

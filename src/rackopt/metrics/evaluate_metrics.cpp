@@ -12,27 +12,11 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/life/wear_reliability.hpp"
-#include "rackopt/metrics/ks_aggregate.hpp"
+#include "rackopt/metrics/model_results.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 namespace rackopt::metrics {
 namespace {
-
-// Why a model could not be computed for this design.
-struct Failure {
-  std::string code;
-  std::string message;
-};
-
-struct Outcome {
-  bool ok = true;
-  double value = 0;
-  std::string code;     // failure code
-  std::string message;  // failure reason, or a remark when ok
-};
-
-Outcome fail(const Failure& f) { return {false, 0, f.code, f.message}; }
-Outcome value(double v, std::string remark = {}) { return {true, v, {}, std::move(remark)}; }
 
 bool has(std::uint8_t bits, Requirement r) { return (bits & static_cast<std::uint8_t>(r)) != 0; }
 
@@ -51,14 +35,6 @@ std::string display(const MetricDefinition& def, double v) {
   std::snprintf(buf, sizeof buf, "%.4g %s", v, std::string(def.unit).c_str());
   return buf;
 }
-
-// The life at each requested R, by whichever path applies (see wear_life_at_R in docs/metrics.md).
-struct ReliabilityRun {
-  std::optional<Failure> failure;
-  std::vector<double> reliabilities;  // requested R values (distinct, request order)
-  std::vector<double> life_s;         // per R
-  std::vector<std::string> remark;    // per R
-};
 
 // Models built on the same geometry repeat its warnings: keep each once.
 void add_warning(MetricValues& out, const std::string& w) {
@@ -197,33 +173,34 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     needed.insert(defs.back()->models);
   }
   MetricValues out;
+  ModelResults m;
+  m.drive = &drive;
+  m.options = &o;
+  m.stress_inputs = resolve_stress_inputs(drive, o);
+  auto failure_of = [](const DesignError& e) { return ModelFailure{e.code(), e.what()}; };
 
   // --- geometry ---------------------------------------------------------
-  std::optional<MeshGeometry> geometry;
-  std::optional<Failure> geometry_failure;
   if (needed.contains(Model::kGeometry)) {
     out.models_run.insert(Model::kGeometry);
     ++out.model_runs;
     try {
-      geometry = build_mesh_geometry(drive);
-      for (const std::string& w : geometry->warnings) add_warning(out, w);
+      m.geometry_slot.value = build_mesh_geometry(drive);
+      for (const std::string& w : m.geometry_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
-      geometry_failure = Failure{e.code(), e.what()};
+      m.geometry_slot.failure = failure_of(e);
     }
   }
 
   // --- stiffness curve ----------------------------------------------------
-  std::optional<StiffnessCurve> curve;
-  std::optional<Failure> curve_failure;
   if (needed.contains(Model::kStiffnessCurve)) {
     out.models_run.insert(Model::kStiffnessCurve);
     ++out.model_runs;
     try {
       const MeshStiffnessModel model(drive);
-      curve = model.curve();
-      for (const std::string& w : curve->warnings) add_warning(out, w);
+      m.curve_slot.value = model.curve();
+      for (const std::string& w : m.curve_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
-      curve_failure = Failure{e.code(), e.what()};
+      m.curve_slot.failure = failure_of(e);
     }
   }
 
@@ -237,10 +214,8 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
   //    (empirical quantile when nothing could be fitted).
   const std::vector<RandomInput>& inputs = drive.reliability.inputs;
   const bool exact = inputs.size() == 1 && o.exact_quantile;
-  std::optional<WearLifeResult> nominal;
-  std::optional<Failure> wear_failure;
-  ReliabilityRun rel;
   if (needed.contains(Model::kWearReliability)) {
+    LifeAtR rel;
     for (std::size_t i = 0; i < resolved.size(); ++i) {
       if (!defs[i]->models.contains(Model::kWearReliability)) continue;
       const double R = *resolved[i].parameter;
@@ -264,7 +239,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       // would cost more than the one sample it serves (9.4 ms vs 3 ms).
       if (exact) ro.life_table = false;
       const WearReliabilityResult r = run_wear_reliability(d, ro);
-      nominal = r.nominal;
+      m.wear_slot.value = r.nominal;
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
         if (inputs.empty()) {
           rel.life_s.push_back(r.nominal.life_years * kSecondsPerYear);
@@ -288,9 +263,10 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
           }
         }
       }
+      m.life_at_R_slot.value = std::move(rel);
     } catch (const DesignError& e) {
-      wear_failure = Failure{e.code(), e.what()};
-      rel.failure = wear_failure;
+      m.wear_slot.failure = failure_of(e);
+      m.life_at_R_slot.failure = failure_of(e);
     }
   } else if (needed.contains(Model::kWearLife)) {
     out.models_run.insert(Model::kWearLife);
@@ -298,137 +274,56 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     try {
       const WearModel model(drive);
       for (const std::string& w : model.warnings()) add_warning(out, w);
-      nominal = model.life();
+      m.wear_slot.value = model.life();
     } catch (const DesignError& e) {
-      wear_failure = Failure{e.code(), e.what()};
+      m.wear_slot.failure = failure_of(e);
     }
   }
-  if (nominal) {
-    for (const std::string& w : nominal->warnings) add_warning(out, w);
+  if (m.wear_slot.value) {
+    for (const std::string& w : m.wear_slot.value->warnings) add_warning(out, w);
   }
 
   // --- stresses ------------------------------------------------------------
-  std::optional<ToothStress> stress;
-  std::optional<Failure> stress_failure;
-  const StressInputs stress_in = resolve_stress_inputs(drive, o);
   if (needed.contains(Model::kStress)) {
     out.models_run.insert(Model::kStress);
     ++out.model_runs;
-    if (geometry_failure) {
-      stress_failure = geometry_failure;
+    if (m.geometry_slot.failure) {
+      m.stress_slot.failure = m.geometry_slot.failure;
     } else {
       try {
-        stress = tooth_stress(drive, *geometry, stress_in.factors, stress_in.rack_root_radius);
-        if (stress->rack_root_radius_clamped) {
+        m.stress_slot.value = tooth_stress(drive, *m.geometry_slot.value, m.stress_inputs.factors,
+                                           m.stress_inputs.rack_root_radius);
+        if (m.stress_slot.value->rack_root_radius_clamped) {
           add_warning(out, "rack root round clamped to the largest that fits the rack space: " +
-                                 format_quantity(stress->rack_root_radius, QuantityKind::kLength, "mm", 4));
+                               format_quantity(m.stress_slot.value->rack_root_radius, QuantityKind::kLength, "mm", 4));
         }
       } catch (const DesignError& e) {
-        stress_failure = Failure{e.code(), e.what()};
+        m.stress_slot.failure = failure_of(e);
       }
     }
   }
 
   // --- values --------------------------------------------------------------
   for (std::size_t i = 0; i < resolved.size(); ++i) {
-    const MetricRequest& r = resolved[i];
     const MetricDefinition& def = *defs[i];
-    const std::string& n = r.name;
-    Outcome oc;
-    if (def.models.contains(Model::kStiffnessCurve)) {
-      if (curve_failure) {
-        oc = fail(*curve_failure);
-      } else {
-        const StiffnessCurve& c = *curve;
-        if (n == "stiffness_fluctuation") oc = value(c.k_fluctuation);
-        else if (n == "min_stiffness") oc = value(c.k_min);
-        else if (n == "max_stiffness") oc = value(c.k_max);
-        else if (n == "mean_stiffness") oc = value(c.k_mean);
-        else {
-          // KS on ln k over the samples plus the refined extremes (so the
-          // bounds hold against k_min/k_max themselves, not only against the
-          // samples). On the logarithm the aggregate is scale-free: its
-          // relative gap is at most ln(N)/rho whatever the stiffness level,
-          // and exp(KS(ln k)) = (sum k_i^-rho)^(-1/rho) is a power mean.
-          std::vector<double> lnk;
-          lnk.reserve(c.samples.size() + 2);
-          bool positive = c.k_min > 0;
-          for (const MeshState& s : c.samples) {
-            positive = positive && s.stiffness > 0;
-            if (positive) lnk.push_back(std::log(s.stiffness));
-          }
-          if (!positive) {
-            oc = fail({"non_finite", "mesh stiffness not positive somewhere: the KS aggregate of ln k is undefined"});
-          } else {
-            lnk.push_back(std::log(c.k_min));
-            lnk.push_back(std::log(c.k_max));
-            const double rho = *r.parameter;
-            const double lo = std::exp(ks_min(lnk, rho, 1.0));
-            const double hi = std::exp(ks_max(lnk, rho, 1.0));
-            if (n == "min_stiffness_ks") {
-              oc = value(lo);
-            } else if (n == "max_stiffness_ks") {
-              oc = value(hi);
-            } else {
-              oc = value((hi - lo) / c.k_mean);
-            }
-          }
-        }
-      }
-    } else if (n == "contact_ratio") {
-      oc = geometry_failure ? fail(*geometry_failure) : value(geometry->path.contact_ratio);
-    } else if (n == "supports_per_metre") {
-      oc = drive.rack.span > 0 ? value(1.0 / drive.rack.span)
-                               : fail({"non_finite", "rack.span is not positive"});
-    } else if (n == "wear_life" || n == "wear_life_cycles") {
-      if (wear_failure) {
-        oc = fail(*wear_failure);
-      } else {
-        const std::string remark = "ended by " + nominal->criterion + ": " + nominal->reason;
-        oc = value(n == "wear_life" ? nominal->life_years * kSecondsPerYear : nominal->life_cycles, remark);
-      }
-    } else if (n == "wear_life_at_R") {
-      if (rel.failure) {
-        oc = fail(*rel.failure);
-      } else {
-        const auto it = std::find(rel.reliabilities.begin(), rel.reliabilities.end(), *r.parameter);
-        const std::size_t k = static_cast<std::size_t>(it - rel.reliabilities.begin());
-        oc = value(rel.life_s.at(k), rel.remark.at(k));
-      }
-    } else if (def.models.contains(Model::kStress)) {
-      if (stress_failure) {
-        oc = fail(*stress_failure);
-      } else {
-        const ToothStress& s = *stress;
-        if (n == "root_bending_stress") {
-          oc = value(s.pinion_root_stress);
-        } else if (n == "rack_root_bending_stress") {
-          oc = value(s.rack_root_stress);
-        } else if (n == "root_bending_safety") {
-          const double sp = stress_in.allowable_bending_pinion / s.pinion_root_stress;
-          const double sr = stress_in.allowable_bending_rack / s.rack_root_stress;
-          oc = value(std::min(sp, sr), sp <= sr ? "pinion governs" : "rack governs");
-        } else if (n == "contact_stress") {
-          oc = value(s.contact_stress);
-        } else if (n == "contact_safety") {
-          // One contact stress for both flanks: the weaker material governs.
-          const double ap = stress_in.allowable_contact_pinion, ar = stress_in.allowable_contact_rack;
-          oc = value(std::min(ap, ar) / s.contact_stress,
-                     ap < ar ? "pinion governs" : ar < ap ? "rack governs" : "");
-        }
-      }
-    }
     MetricValue mv;
     mv.request = requests[i];
     mv.label = to_string(requests[i]);
-    if (oc.ok && !std::isfinite(oc.value)) {
-      oc = {false, 0, "non_finite", "metric " + mv.label + " evaluated to a non-finite number"};
+    try {
+      const MetricOutcome oc = def.compute(m, resolved[i]);
+      if (std::isfinite(oc.value)) {
+        mv.ok = true;
+        mv.value = oc.value;
+        mv.display = display(def, oc.value);
+        mv.message = oc.remark;
+      } else {
+        mv.error_code = "non_finite";
+        mv.message = "metric " + mv.label + " evaluated to a non-finite number";
+      }
+    } catch (const DesignError& e) {
+      mv.error_code = e.code();
+      mv.message = e.what();
     }
-    mv.ok = oc.ok;
-    mv.value = oc.ok ? oc.value : 0.0;
-    if (oc.ok) mv.display = display(def, oc.value);
-    mv.error_code = oc.code;
-    mv.message = oc.message;
     out.values.push_back(std::move(mv));
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

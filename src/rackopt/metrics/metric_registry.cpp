@@ -5,99 +5,23 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <system_error>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/suggest.hpp"
+#include "rackopt/metrics/metric_families.hpp"
 
 namespace rackopt::metrics {
 namespace {
 
-constexpr std::uint8_t kWearBits = static_cast<std::uint8_t>(Requirement::kWear);
-constexpr std::uint8_t kDutyBits = static_cast<std::uint8_t>(Requirement::kDuty);
-constexpr std::uint8_t kBendBits = static_cast<std::uint8_t>(Requirement::kAllowableBending);
-constexpr std::uint8_t kContactBits = static_cast<std::uint8_t>(Requirement::kAllowableContact);
-
-constexpr std::string_view kStiffnessEffects =
-    "pinion_tooth, root_segment, fillet_foundation, rack_tooth, hertz, rack_span, couple_term, "
-    "body_axial, body_shear, interference_limit, spalling";
-constexpr std::string_view kWearEffects =
-    "pinion_tooth, fillet_foundation, hertz, interference_limit";
-
-// KS aggregation weight on ln k: relative gap to the true extreme <= ln(N)/rho.
-constexpr ParameterSpec kRho{ParameterSpec::Use::kOptional, "rho", 500.0, 0.0, 1e7,
-                             "KS weight on ln k; relative gap to the true extreme at most ln(N)/rho"};
-
 std::vector<MetricDefinition> build_registry() {
-  const ModelSet curve{Model::kStiffnessCurve};
-  const ModelSet stress{Model::kGeometry, Model::kStress};
   std::vector<MetricDefinition> r;
-  r.push_back({"stiffness_fluctuation", "-", QuantityKind::kDimensionless, "",
-               "(k_max - k_min)/k_mean of the mesh stiffness over one rack span", curve, 0,
-               kStiffnessEffects, false, {}, "StiffnessCurve::k_fluctuation (physics.md 6.3, 7.2)"});
-  r.push_back({"min_stiffness", "N/m", QuantityKind::kStiffness, "MN/m",
-               "smallest mesh stiffness over one rack span (refined inside smooth pieces)", curve, 0,
-               kStiffnessEffects, false, {}, "StiffnessCurve::k_min"});
-  r.push_back({"max_stiffness", "N/m", QuantityKind::kStiffness, "MN/m",
-               "largest mesh stiffness over one rack span", curve, 0, kStiffnessEffects, false, {},
-               "StiffnessCurve::k_max"});
-  r.push_back({"mean_stiffness", "N/m", QuantityKind::kStiffness, "MN/m",
-               "mean mesh stiffness over one rack span (piecewise cubic quadrature)", curve, 0,
-               kStiffnessEffects, true, {}, "StiffnessCurve::k_mean"});
-  r.push_back({"min_stiffness_ks", "N/m", QuantityKind::kStiffness, "MN/m",
-               "Kreisselmeier-Steinhauser smooth minimum of the stiffness samples: a lower bound of "
-               "min_stiffness",
-               curve, 0, kStiffnessEffects, true, kRho,
-               "exp(KS(ln k)) = (sum k_i^-rho)^(-1/rho) over the curve samples and the refined extremes "
-               "(Kreisselmeier & Steinhauser 1979)"});
-  r.push_back({"max_stiffness_ks", "N/m", QuantityKind::kStiffness, "MN/m",
-               "Kreisselmeier-Steinhauser smooth maximum of the stiffness samples: an upper bound of "
-               "max_stiffness",
-               curve, 0, kStiffnessEffects, true, kRho,
-               "exp(KS(ln k)) = (sum k_i^rho)^(1/rho)"});
-  r.push_back({"stiffness_fluctuation_ks", "-", QuantityKind::kDimensionless, "",
-               "(max_stiffness_ks - min_stiffness_ks)/k_mean: a smooth upper bound of "
-               "stiffness_fluctuation",
-               curve, 0, kStiffnessEffects, true, kRho, "from the two KS aggregates"});
-  r.push_back({"contact_ratio", "-", QuantityKind::kDimensionless, "",
-               "contact ratio of the path actually used (interference limits when enabled)",
-               ModelSet{Model::kGeometry}, 0, "interference_limit", true, {},
-               "ContactPath::contact_ratio (physics.md 7.2)"});
-  r.push_back({"supports_per_metre", "1/m", std::nullopt, "",
-               "rack supports (hinges) per metre of rack, 1/rack.span: a cost proxy", ModelSet{}, 0, "",
-               true, {}, "definition"});
-  r.push_back({"wear_life", "s", QuantityKind::kTime, "yr",
-               "deterministic Archard wear life of the nominal drive", ModelSet{Model::kWearLife},
-               static_cast<std::uint8_t>(kWearBits | kDutyBits), kWearEffects, false, {},
-               "WearModel(drive).life(WearSample{}) (physics.md 10, docs/models/wear.md)"});
-  r.push_back({"wear_life_cycles", "-", QuantityKind::kDimensionless, "",
-               "deterministic wear life in rack passes (no duty needed)", ModelSet{Model::kWearLife},
-               kWearBits, kWearEffects, false, {}, "WearLifeResult::life_cycles"});
-  r.push_back({"wear_life_at_R", "s", QuantityKind::kTime, "yr",
-               "wear life reached with probability R under the problem's reliability inputs "
-               "(fixed seed: common random numbers across designs)",
-               ModelSet{Model::kWearReliability}, static_cast<std::uint8_t>(kWearBits | kDutyBits),
-               kWearEffects, false,
-               {ParameterSpec::Use::kRequired, "R", 0.0, 0.0, 1.0, "reliability, strictly inside (0, 1)"},
-               "exact input quantile (one monotone input) or run_wear_reliability (physics.md 12)"});
-  r.push_back({"root_bending_stress", "Pa", QuantityKind::kModulus, "MPa",
-               "pinion tooth-root bending stress, load at the tip, 30 deg tangent critical section "
-               "of the generated fillet",
-               stress, 0, "interference_limit", true, {},
-               "ISO 6336-3:1996 method C (Y_F, Y_S, Y_eps at the tip) on the real tooth"});
-  r.push_back({"rack_root_bending_stress", "Pa", QuantityKind::kModulus, "MPa",
-               "rack tooth-root bending stress, load at the highest rack contact, 30 deg tangent on "
-               "the rack root round",
-               stress, 0, "interference_limit", true, {}, "ISO 6336-3 form, trapezoid rack tooth"});
-  r.push_back({"root_bending_safety", "-", QuantityKind::kDimensionless, "",
-               "min(S_F pinion, S_F rack), S_F = allowable bending / root stress", stress, kBendBits,
-               "interference_limit", true, {}, "ISO 6336-3 S_F = sigma_FP / sigma_F"});
-  r.push_back({"contact_stress", "Pa", QuantityKind::kModulus, "MPa",
-               "nominal flank contact stress Z_E Z_H Z_eps sqrt(F_t/(b d)) (rack: u -> infinity)",
-               stress, 0, "interference_limit", true, {}, "ISO 6336-2 (Z_B, Z_beta = 1)"});
-  r.push_back({"contact_safety", "-", QuantityKind::kDimensionless, "",
-               "S_H = allowable contact stress (weaker member) / contact stress", stress, kContactBits,
-               "interference_limit", true, {}, "ISO 6336-2 S_H = sigma_HP / sigma_H"});
+  append_stiffness_metrics(r);
+  append_geometry_metrics(r);
+  append_wear_metrics(r);
+  append_stress_metrics(r);
+  check_registry(r);
   return r;
 }
 
@@ -137,6 +61,20 @@ std::vector<std::string> ModelSet::names() const {
     if (contains(m)) out.emplace_back(model_name(m));
   }
   return out;
+}
+
+void check_registry(const std::vector<MetricDefinition>& registry) {
+  for (std::size_t i = 0; i < registry.size(); ++i) {
+    const MetricDefinition& d = registry[i];
+    const std::string who = "metric registry: '" + std::string(d.name) + "'";
+    if (d.name.empty()) throw std::logic_error("metric registry: a definition without a name");
+    if (!d.compute) throw std::logic_error(who + " has no computation");
+    if (d.unit.empty() || d.description.empty() || d.source.empty())
+      throw std::logic_error(who + " lacks its unit, description or source");
+    for (std::size_t j = 0; j < i; ++j) {
+      if (registry[j].name == d.name) throw std::logic_error(who + " is defined twice");
+    }
+  }
 }
 
 const std::vector<MetricDefinition>& metric_registry() {

@@ -71,6 +71,22 @@ struct ParameterSpec {
   std::string_view meaning;
 };
 
+struct ModelResults;   // metrics/model_results.hpp
+struct MetricRequest;
+
+// A metric's value for one design, in its SI unit, and an optional remark
+// ("rack governs", which Monte Carlo path gave a life). A computation that
+// cannot give a value throws DesignError (code + why); the models it reads
+// re-raise their own failures that way.
+struct MetricOutcome {
+  double value = 0;
+  std::string remark;
+};
+
+// How a metric's value is computed from the models it declared. Lives beside
+// the definition (metrics/*_metrics.cpp), so a metric cannot exist without it.
+using MetricCompute = MetricOutcome (*)(const ModelResults& models, const MetricRequest& request);
+
 struct MetricDefinition {
   std::string_view name;
   std::string_view unit;                // SI unit text: "N/m", "Pa", "s", "1/m", "-"
@@ -87,10 +103,18 @@ struct MetricDefinition {
   bool smooth = false;
   ParameterSpec parameter;
   std::string_view source;              // where the formula comes from
+  MetricCompute compute = nullptr;      // never null in metric_registry() (checked when it is built)
 };
 
-// Every metric, in a stable order (the order of docs/metrics.md).
+// Every metric, in a stable order (the order of docs/metrics.md). Built once,
+// on first use, and checked then: a metric without a computation, a repeated
+// name or a missing unit/description/source throws std::logic_error, so such a
+// registry fails at start-up (every program asks for it before any design).
 const std::vector<MetricDefinition>& metric_registry();
+
+// The checks metric_registry() applies, for a registry under construction.
+// Throws std::logic_error naming the first faulty definition.
+void check_registry(const std::vector<MetricDefinition>& registry);
 
 // The definition called `name`. Throws InputError (key "metric") for an
 // unknown name; the message lists every valid name and, for a near miss

@@ -63,8 +63,14 @@ constexpr KeySpec kKeySpecs[] = {
     // case-hardened sigma_HP is ~1.5 GPa); above it a unit was forgotten.
     {"materials.*.allowable_bending", QuantityKind::kModulus, 0, 5e9, true, false},
     {"materials.*.allowable_contact", QuantityKind::kModulus, 0, 5e9, true, false},
+    // Metals and polymers lie in 900..23000 kg/m^3 (POM ~1400, steel 7850).
+    {"materials.*.density", QuantityKind::kDensity, 500, 25000, false, false},
     {"load.force", QuantityKind::kForce, 0, kInf, true, true},
     {"load.torque", QuantityKind::kTorque, 0, kInf, true, true},
+    {"load.thrust", QuantityKind::kForce, 0, kInf, true, true},
+    // 50 m/s (180 km/h) is beyond any rack drive; above it a unit was forgotten.
+    {"load.speed", QuantityKind::kSpeed, 0, 50, true, false},
+    {"load.efficiency", QuantityKind::kDimensionless, 0, 1, true, false},
     // ISO 6336 load factors are >= 1 by definition (1 = no extra load);
     // above 10 the simplified method is meaningless.
     {"load.application_factor", QuantityKind::kDimensionless, 1, 10, false, false},
@@ -100,6 +106,10 @@ constexpr KeySpec kKeySpecs[] = {
     {"wear.hardness.values[]", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
     {"duty.rack_meshes_per_year", QuantityKind::kRate, 0, kInf, true, true},
     {"duty.pinion_meshes_per_year", QuantityKind::kRate, 0, kInf, false, true},
+    // 1e9 m/yr is a drive running day and night at 30 m/s; a bare number is m/s.
+    {"duty.travel_per_year", QuantityKind::kSpeed, 0, 1e9 / kSecondsPerYear, true, false},
+    {"duty.strokes_per_year", QuantityKind::kRate, 0, kInf, true, true},
+    {"duty.stroke", QuantityKind::kLength, 0, 1e5, true, false},
     {"reliability.samples", QuantityKind::kCount, 1, 1e6, false, false},
     {"reliability.seed", QuantityKind::kCount, 0, 2e9, false, false},
     {"reliability.ks_level", QuantityKind::kDimensionless, 0.001, 0.5, false, false},
@@ -175,6 +185,10 @@ class Block : public MarkedMap {
       case QuantityKind::kTime: return "a time (e.g. 60 yr)";
       case QuantityKind::kHardness: return "a hardness (e.g. 596 HB)";
       case QuantityKind::kRate: return "a rate (e.g. 3000 1/yr)";
+      case QuantityKind::kMass: return "a mass (e.g. 120 kg)";
+      case QuantityKind::kDensity: return "a density (e.g. 7850 kg/m^3)";
+      case QuantityKind::kSpeed: return "a speed (e.g. 0.5 m/s, 2000 km/yr)";
+      case QuantityKind::kPower: return "a power (e.g. 15 kW)";
     }
     return "a number";
   }
@@ -544,12 +558,42 @@ void read_wear(const Block& top, Drive& drive) {
 
 void read_duty(const Block& top, Drive& drive) {
   const Block d(top.get("duty"), "duty", "duty", top.key_mark("duty"),
-                {"rack_meshes_per_year", "pinion_meshes_per_year"});
+                {"rack_meshes_per_year", "pinion_meshes_per_year", "travel_per_year", "strokes_per_year", "stroke"});
   if (d.node() == nullptr) return;  // no duty: lives in cycles only
+  Duty& duty = drive.duty;
+  const bool as_counts = d.has("rack_meshes_per_year");
+  const bool as_travel = d.has("travel_per_year") || d.has("strokes_per_year") || d.has("stroke");
+  if (as_counts && as_travel) {
+    const std::string other = d.has("stroke") ? "stroke" : d.has("travel_per_year") ? "travel_per_year" : "strokes_per_year";
+    throw InputError(d.key_mark(other), "duty." + other,
+                     "give the duty either as mesh counts (duty.rack_meshes_per_year) or as travel (duty.stroke with "
+                     "duty.travel_per_year or duty.strokes_per_year), not both: duty.rack_meshes_per_year is also given");
+  }
   // The rate kind is SI (1/s) like every value; the Drive keeps per year.
-  drive.duty.rack_meshes_per_year = d.number("rack_meshes_per_year", std::nullopt) * kSecondsPerYear;
-  const double pinion = d.number("pinion_meshes_per_year", 0.0) * kSecondsPerYear;
-  drive.duty.pinion_meshes_per_year = pinion > 0 ? pinion : drive.duty.rack_meshes_per_year;
+  if (!as_travel) {
+    duty.rack_meshes_per_year = d.number("rack_meshes_per_year", std::nullopt) * kSecondsPerYear;
+    const double pinion = d.number("pinion_meshes_per_year", 0.0) * kSecondsPerYear;
+    duty.pinion_meshes_per_year = pinion > 0 ? pinion : duty.rack_meshes_per_year;
+    return;
+  }
+  if (d.has("pinion_meshes_per_year")) {
+    throw InputError(d.key_mark("pinion_meshes_per_year"), "duty.pinion_meshes_per_year",
+                     "with the duty given as travel the pinion's mesh count follows from it (travel / (pi m z)); "
+                     "remove duty.pinion_meshes_per_year");
+  }
+  if (d.has("travel_per_year") && d.has("strokes_per_year")) {
+    throw InputError(d.key_mark("strokes_per_year"), "duty.strokes_per_year",
+                     "give duty.travel_per_year or duty.strokes_per_year, not both (travel = strokes x stroke)");
+  }
+  if (!d.has("travel_per_year") && !d.has("strokes_per_year")) {
+    d.missing("travel_per_year", "duty.travel_per_year (e.g. 2000 km/yr) or duty.strokes_per_year (e.g. 5000 1/yr)");
+  }
+  duty.stroke = d.number("stroke", std::nullopt);
+  duty.travel_per_year = d.has("travel_per_year")
+                             ? d.number("travel_per_year", std::nullopt) * kSecondsPerYear
+                             : d.number("strokes_per_year", std::nullopt) * kSecondsPerYear * duty.stroke;
+  duty.rack_meshes_per_year = duty.travel_per_year / duty.stroke;
+  duty.pinion_meshes_per_year = duty.travel_per_year / (kPi * drive.pinion.module * drive.pinion.teeth);
 }
 
 struct RandomInputKind {
@@ -702,7 +746,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
     if (block.node() != nullptr) {
       for (const auto& e : block.node()->entries) {
         const Block m(&e.value, "materials." + e.key, "materials.*", e.key_mark,
-                      {"E", "nu", "allowable_bending", "allowable_contact"});
+                      {"E", "nu", "allowable_bending", "allowable_contact", "density"});
         if (m.node() == nullptr) {
           throw InputError(e.key_mark, m.path(), "a material needs E (modulus) and nu (Poisson's ratio)");
         }
@@ -714,6 +758,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
         const std::string hint = " (a permissible stress; a bare number means GPa: write e.g. 430 MPa)";
         material.allowable_bending = m.number("allowable_bending", 0.0, hint);
         material.allowable_contact = m.number("allowable_contact", 0.0, hint);
+        material.density = m.number("density", material.density);
         materials[e.key] = material;
       }
     }
@@ -807,29 +852,38 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
 
   // --- load
   const Block load(top.get("load"), "load", "load", top.mark(),
-                   {"force", "torque", "application_factor", "dynamic_factor", "face_load_factor",
-                    "face_load_factor_bending", "transverse_load_factor"});
-  const bool has_force = load.has("force");
-  const bool has_torque = load.has("torque");
-  if (has_force && has_torque) {
-    throw InputError(load.key_mark("torque"), "load.torque",
-                     "give either load.force (normal mesh force) or load.torque (pinion torque), not both");
+                   {"force", "torque", "thrust", "speed", "efficiency", "application_factor", "dynamic_factor",
+                    "face_load_factor", "face_load_factor_bending", "transverse_load_factor"});
+  {
+    std::vector<std::string> given;
+    for (const char* k : {"force", "torque", "thrust"}) {
+      if (load.has(k)) given.emplace_back(k);
+    }
+    if (given.size() > 1) {
+      throw InputError(load.key_mark(given[1]), "load." + given[1],
+                       "give one of load.force (normal mesh force), load.torque (pinion torque) or load.thrust "
+                       "(rack thrust), not load." + given[0] + " and load." + given[1]);
+    }
+    if (given.empty()) {
+      load.missing("force", "load.force (normal mesh force along the line of action, e.g. 50 kN), load.torque "
+                            "(pinion torque, e.g. 453 kN*m) or load.thrust (tangential force on the rack, e.g. 12 kN)");
+    }
   }
-  if (!has_force && !has_torque) {
-    load.missing("force", "load.force (normal mesh force along the line of action, e.g. 50 kN) or load.torque "
-                          "(pinion torque, e.g. 453 kN*m)");
-  }
-  if (has_force) {
+  // The normal force acts along the line of action, tangent to the base
+  // circle: F = T / r_b with r_b = m z cos(a0) / 2 (profile shift does not
+  // change r_b); the rack's operating pressure angle is a0, so F = F_t / cos a0.
+  if (load.has("force")) {
     drive.load.force = load.number("force", std::nullopt);
-    drive.load.torque = 0.0;
-  } else {
+  } else if (load.has("torque")) {
     drive.load.torque = load.number("torque", std::nullopt);
-    // The normal force acts along the line of action, tangent to the base
-    // circle: F = T / r_b with r_b = m z cos(a0) / 2 (profile shift does not
-    // change r_b).
     const double base_radius = 0.5 * pin.module * pin.teeth * std::cos(pin.pressure_angle);
     drive.load.force = drive.load.torque / base_radius;
+  } else {
+    drive.load.thrust = load.number("thrust", std::nullopt);
+    drive.load.force = drive.load.thrust / std::cos(pin.pressure_angle);
   }
+  drive.load.speed = load.number("speed", 0.0);
+  drive.load.efficiency = load.number("efficiency", 1.0);
   {
     const std::string why = " (ISO 6336 load factors are >= 1; 1 = no extra load)";
     const Load ld;
@@ -873,6 +927,12 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   e.body_shear = fx.flag("body_shear", defaults.body_shear);
   e.interference_limit = fx.flag("interference_limit", defaults.interference_limit);
   e.spalling = fx.flag("spalling", defaults.spalling);
+  if (!e.any_compliance()) {
+    throw InputError(top.key_mark("effects"), "effects",
+                     "every compliance is switched off (pinion_tooth, fillet_foundation, rack_tooth, hertz: off, "
+                     "rack_span: rigid): the mesh would be rigid, with infinite stiffness and no load sharing; "
+                     "keep at least one on");
+  }
 
   // --- faults
   if (const MarkedNode* faults = top.get("faults")) {

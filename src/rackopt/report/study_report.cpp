@@ -55,6 +55,10 @@ std::string si_unit(QuantityKind kind) {
     case QuantityKind::kTime: return "s";
     case QuantityKind::kHardness: return "Pa";
     case QuantityKind::kRate: return "1/s";
+    case QuantityKind::kMass: return "kg";
+    case QuantityKind::kDensity: return "kg/m^3";
+    case QuantityKind::kSpeed: return "m/s";
+    case QuantityKind::kPower: return "W";
   }
   return "";
 }

@@ -85,6 +85,12 @@ struct MeshStiffnessModel::Impl {
   explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)) {
     warnings = geo.warnings;
     const Effects& fx = drive.effects;
+    // A drive built in code skips the loader's check: a rigid mesh has no
+    // finite stiffness, so refuse it rather than return inf.
+    if (!fx.any_compliance()) {
+      throw InputError(SourceMark{drive.source_file.empty() ? "<drive>" : drive.source_file, 0, 0}, "effects",
+                       "every compliance is switched off: the mesh would be rigid (infinite stiffness)");
+    }
     a0 = drive.pinion.pressure_angle;
     ca = std::cos(a0);
     sa = std::sin(a0);

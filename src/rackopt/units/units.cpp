@@ -70,6 +70,21 @@ constexpr UnitDef kUnits[] = {
     {"1/min", QuantityKind::kRate, 1.0 / 60.0},
     {"1/s", QuantityKind::kRate, 1.0},
     {"Hz", QuantityKind::kRate, 1.0},
+    {"kg", QuantityKind::kMass, 1.0},
+    {"t", QuantityKind::kMass, 1e3},
+    {"g", QuantityKind::kMass, 1e-3},
+    {"kg/m^3", QuantityKind::kDensity, 1.0},
+    {"g/cm^3", QuantityKind::kDensity, 1e3},
+    {"t/m^3", QuantityKind::kDensity, 1e3},
+    {"m/s", QuantityKind::kSpeed, 1.0},
+    {"mm/s", QuantityKind::kSpeed, 1e-3},
+    {"m/min", QuantityKind::kSpeed, 1.0 / 60.0},
+    {"km/h", QuantityKind::kSpeed, 1.0 / 3.6},
+    {"m/yr", QuantityKind::kSpeed, 1.0 / kSecondsPerYear},
+    {"km/yr", QuantityKind::kSpeed, 1e3 / kSecondsPerYear},
+    {"W", QuantityKind::kPower, 1.0},
+    {"kW", QuantityKind::kPower, 1e3},
+    {"MW", QuantityKind::kPower, 1e6},
 };
 
 // Word spellings of the canonical names above, after normalize_unit.
@@ -191,6 +206,10 @@ std::string example(QuantityKind kind) {
     case QuantityKind::kTime: return "'60 yr'";
     case QuantityKind::kHardness: return "'596 HB'";
     case QuantityKind::kRate: return "'3000 1/yr'";
+    case QuantityKind::kMass: return "'120 kg'";
+    case QuantityKind::kDensity: return "'7850 kg/m^3'";
+    case QuantityKind::kSpeed: return "'0.5 m/s'";
+    case QuantityKind::kPower: return "'15 kW'";
   }
   return "";
 }
@@ -260,6 +279,10 @@ std::string_view kind_name(QuantityKind kind) {
     case QuantityKind::kTime: return "time";
     case QuantityKind::kHardness: return "hardness";
     case QuantityKind::kRate: return "rate (events per time)";
+    case QuantityKind::kMass: return "mass";
+    case QuantityKind::kDensity: return "density";
+    case QuantityKind::kSpeed: return "speed (length per time)";
+    case QuantityKind::kPower: return "power";
   }
   return "quantity";
 }

@@ -36,6 +36,10 @@ enum class QuantityKind {
                    // HV is taken as 1 HV = 1 HB (both kgf/mm^2 of indentation area): an
                    // approximation, steels differ by ~5 % and more above 450 HB (ISO 18265).
   kRate,           // events per time: 1/yr (also /yr, per year), 1/d, 1/h, 1/min, 1/s (also Hz); SI 1/s
+  kMass,           // kg, t, g
+  kDensity,        // kg/m^3, g/cm^3, t/m^3
+  kSpeed,          // m/s, mm/s, m/min, km/h, m/yr, km/yr (a travel per year is a speed); SI m/s
+  kPower,          // W, kW, MW
 };
 
 // "length", "angle", ... with an article-free noun used in messages.

@@ -1,0 +1,23 @@
+// The metric families that make up the registry (metric_registry.cpp builds it
+// from these, in this order, which is the order of docs/metrics.md). Each
+// family file holds its definitions together with their computations.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "rackopt/metrics/metric_registry.hpp"
+
+namespace rackopt::metrics {
+
+void append_stiffness_metrics(std::vector<MetricDefinition>& registry);  // stiffness_metrics.cpp
+void append_geometry_metrics(std::vector<MetricDefinition>& registry);   // geometry_metrics.cpp
+void append_wear_metrics(std::vector<MetricDefinition>& registry);       // wear_metrics.cpp
+void append_stress_metrics(std::vector<MetricDefinition>& registry);     // stress_metrics.cpp
+
+// Switches of drive.effects that change the stiffness curve (documentation).
+inline constexpr std::string_view kStiffnessEffects =
+    "pinion_tooth, root_segment, fillet_foundation, rack_tooth, hertz, rack_span, couple_term, "
+    "body_axial, body_shear, interference_limit, spalling";
+
+}  // namespace rackopt::metrics

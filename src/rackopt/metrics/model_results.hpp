@@ -1,0 +1,74 @@
+// The models one evaluate_metrics call computed for one design, as the metric
+// computations read them.
+//
+// Each model is computed at most once per call and only when a requested
+// metric declared it (MetricDefinition::models). A metric reads a model
+// through the accessor below: the accessor re-raises the model's DesignError
+// when the model failed for this design (so the metric fails with the model's
+// own code and message), and throws std::logic_error when the metric did not
+// declare the model (a programming error the registry test catches).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/core/error.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/metrics/evaluate_metrics.hpp"
+#include "rackopt/metrics/tooth_stress.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/wear/wear_life.hpp"
+
+namespace rackopt::metrics {
+
+// Why a model could not be computed for this design (a DesignError's code and message).
+struct ModelFailure {
+  std::string code;
+  std::string message;
+};
+
+// A model's outcome: a value, a failure, or neither (not computed).
+template <class T>
+struct ModelSlot {
+  std::optional<T> value;
+  std::optional<ModelFailure> failure;
+  bool computed() const { return value.has_value() || failure.has_value(); }
+};
+
+// The life at each requested reliability R (wear_life_at_R).
+struct LifeAtR {
+  std::vector<double> reliabilities;  // distinct R values, request order
+  std::vector<double> life_s;         // per R [s]
+  std::vector<std::string> remark;    // per R: which path gave it
+};
+
+struct ModelResults {
+  const Drive* drive = nullptr;
+  const MetricOptions* options = nullptr;
+  StressInputs stress_inputs;
+
+  ModelSlot<MeshGeometry> geometry_slot;
+  ModelSlot<StiffnessCurve> curve_slot;
+  ModelSlot<WearLifeResult> wear_slot;   // nominal life (from the wear model or the reliability run)
+  ModelSlot<LifeAtR> life_at_R_slot;
+  ModelSlot<ToothStress> stress_slot;
+
+  const MeshGeometry& geometry() const { return get(geometry_slot, "geometry"); }
+  const StiffnessCurve& curve() const { return get(curve_slot, "stiffness_curve"); }
+  const WearLifeResult& wear_life() const { return get(wear_slot, "wear_life"); }
+  const LifeAtR& life_at_R() const { return get(life_at_R_slot, "wear_reliability"); }
+  const ToothStress& stress() const { return get(stress_slot, "stress"); }
+
+ private:
+  template <class T>
+  static const T& get(const ModelSlot<T>& slot, const char* model) {
+    if (slot.failure) throw DesignError(slot.failure->code, slot.failure->message);
+    if (!slot.value) throw std::logic_error(std::string("a metric read the model '") + model +
+                                            "' without declaring it in the metric registry");
+    return *slot.value;
+  }
+};
+
+}  // namespace rackopt::metrics
