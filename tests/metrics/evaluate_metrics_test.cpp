@@ -311,13 +311,16 @@ namespace {
 // it gives a finite value on the ship lift (which configures wear, duty,
 // reliability and allowables), never a "read an undeclared model" error.
 TEST(EvaluateMetrics, EveryRegisteredMetricComputesFromItsDeclaredModelsAlone) {
-  const Drive ship = problem("ship_lift");
+  Drive ship = problem("ship_lift");
+  ship.load.speed = 0.2;   // drive power and pinion speed need it
+  MetricOptions o;
+  o.cost.rack_length = 100;  // the cost's pinion share needs it
   for (const MetricDefinition& d : metric_registry()) {
     MetricRequest q{std::string(d.name), std::nullopt};
     if (d.parameter.use == ParameterSpec::Use::kRequired) q.parameter = 0.9;
     const std::vector<MetricRequest> one{q};
     MetricValues v;
-    ASSERT_NO_THROW(v = evaluate_metrics(ship, one)) << d.name;
+    ASSERT_NO_THROW(v = evaluate_metrics(ship, one, o)) << d.name;
     EXPECT_TRUE(v.values.at(0).ok) << d.name << ": " << v.values.at(0).message;
     EXPECT_TRUE(std::isfinite(v.values.at(0).value)) << d.name;
     EXPECT_EQ(v.models_run, d.models) << d.name;

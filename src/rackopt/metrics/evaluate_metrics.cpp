@@ -101,9 +101,26 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
     missing("duty.rack_meshes_per_year", "wear lives in seconds need duty.rack_meshes_per_year > 0 "
                                          "(wear_life_cycles needs no duty)");
   }
+  if (has(req, Requirement::kSpeed) && !(drive.load.speed > 0)) {
+    missing_in_problem(drive, "load.speed", "drive_power and pinion_speed need the rack speed load.speed (e.g. 0.5 m/s)");
+  }
+  if (has(req, Requirement::kBodyHeight) && !(drive.rack.body_height > 0)) {
+    missing_in_problem(drive, "rack.body_height",
+                       "rack_section_height needs a rectangular rack body (rack.body_height); the rack section is "
+                       "given explicitly");
+  }
   auto nonneg = [](double v, const char* key) {
     if (!std::isfinite(v) || v < 0) missing(key, "must be >= 0 and finite (0 = not given)");
   };
+  nonneg(o.cost.rack_per_kg, "cost.rack_per_kg");
+  nonneg(o.cost.pinion_per_kg, "cost.pinion_per_kg");
+  nonneg(o.cost.per_support, "cost.per_support");
+  nonneg(o.cost.rack_length, "cost.rack_length");
+  if (has(req, Requirement::kRackLength) && o.cost.pinion_per_kg > 0 && !(o.cost.rack_length > 0) &&
+      !(drive.duty.stroke > 0)) {
+    missing("cost.rack_length", "cost_per_metre spreads the pinion's cost over the installed rack: give "
+                                "metric_options.cost.rack_length (or the problem's duty.stroke), or cost.pinion_per_kg: 0");
+  }
   nonneg(o.allowable_bending_pinion, "allowable_bending_pinion");
   nonneg(o.allowable_bending_rack, "allowable_bending_rack");
   nonneg(o.allowable_contact_pinion, "allowable_contact_pinion");

@@ -35,6 +35,16 @@ struct LoadFactorOverrides {
   double transverse_contact = 0;  // K_Halpha (load.transverse_load_factor)
 };
 
+// Weights of the cost proxy `cost_per_metre` (docs/metrics.md): cost units
+// (any currency) per kg of rack and of pinion steel and per rack support.
+// The pinion's cost is spread over the installed rack length.
+struct CostWeights {
+  double rack_per_kg = 1.0;
+  double pinion_per_kg = 1.0;
+  double per_support = 0.0;
+  double rack_length = 0.0;  // [m]; 0 = the problem's duty.stroke
+};
+
 // Overrides of problem keys for the stress metrics, and settings of the
 // metric computations. Every stress input is a problem key (docs/yaml.md);
 // a value here > 0 wins over the drive's, 0 (the default) takes the drive's.
@@ -49,6 +59,8 @@ struct MetricOptions {
   double allowable_contact_pinion = 0;    // sigma_HP pinion
   double allowable_contact_rack = 0;      // sigma_HP rack
   double rack_root_radius = 0;            // rack root round [m]; 0 = rack.root_radius
+
+  CostWeights cost;                       // cost_per_metre
 
   // wear_life_at_R (docs/metrics.md)
   bool exact_quantile = true;      // one random input: life at R from its quantile (no sampling error)

@@ -14,6 +14,7 @@ void append_stiffness_metrics(std::vector<MetricDefinition>& registry);  // stif
 void append_geometry_metrics(std::vector<MetricDefinition>& registry);   // geometry_metrics.cpp
 void append_wear_metrics(std::vector<MetricDefinition>& registry);       // wear_metrics.cpp
 void append_stress_metrics(std::vector<MetricDefinition>& registry);     // stress_metrics.cpp
+void append_size_metrics(std::vector<MetricDefinition>& registry);       // size_metrics.cpp
 
 // Switches of drive.effects that change the stiffness curve (documentation).
 inline constexpr std::string_view kStiffnessEffects =

@@ -21,6 +21,7 @@ std::vector<MetricDefinition> build_registry() {
   append_geometry_metrics(r);
   append_wear_metrics(r);
   append_stress_metrics(r);
+  append_size_metrics(r);
   check_registry(r);
   return r;
 }

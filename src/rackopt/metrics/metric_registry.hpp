@@ -59,6 +59,9 @@ enum class Requirement : std::uint8_t {
   kDuty = 2,               // duty.rack_meshes_per_year > 0 (lives in seconds)
   kAllowableBending = 4,   // sigma_FP of both members: materials.<name>.allowable_bending (or MetricOptions)
   kAllowableContact = 8,   // sigma_HP of both members: materials.<name>.allowable_contact (or MetricOptions)
+  kSpeed = 16,             // load.speed > 0 (drive power, pinion speed)
+  kBodyHeight = 32,        // a rectangular rack body (rack.body_height), not an explicit section
+  kRackLength = 64,        // a rack length for the pinion's share of the cost (metric option or duty.stroke)
 };
 
 // How a metric uses its parameter.

@@ -118,6 +118,14 @@ std::string study_fingerprint(const StudySpec& spec) {
   c.integer(static_cast<std::uint64_t>(m.reliability_samples));
   c.integer(static_cast<std::uint64_t>(m.reliability_seed));
   c.integer(static_cast<std::uint64_t>(m.bootstrap_replicates));
+  // Cost weights only when not the defaults, so the fingerprints of studies
+  // that do not use them stay what their records hold.
+  const metrics::CostWeights default_cost;
+  if (m.cost.rack_per_kg != default_cost.rack_per_kg || m.cost.pinion_per_kg != default_cost.pinion_per_kg ||
+      m.cost.per_support != default_cost.per_support || m.cost.rack_length != default_cost.rack_length) {
+    c.key("cost");
+    for (double v : {m.cost.rack_per_kg, m.cost.pinion_per_kg, m.cost.per_support, m.cost.rack_length}) c.num(v);
+  }
   // threads: results do not depend on it.
 
   auto solver = [&](const solvers::SolverSettings& s) {

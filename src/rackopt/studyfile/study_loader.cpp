@@ -800,7 +800,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
 
   // --- metric_options ----------------------------------------------------------
   const Section mo(top.get("metric_options"), "metric_options", top.key_mark("metric_options"),
-                   {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates"},
+                   {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates", "cost"},
                    "{exact_quantile: on, reliability_samples: 1000}");
   spec.metric_options.exact_quantile = mo.flag("exact_quantile", spec.metric_options.exact_quantile);
   spec.metric_options.reliability_samples = static_cast<long>(mo.integer("reliability_samples", -1, 1, 1000000));
@@ -811,6 +811,16 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
                                  : static_cast<long>(spec.seed % 2000000001ULL);
   spec.metric_options.bootstrap_replicates =
       static_cast<int>(mo.integer("bootstrap_replicates", spec.metric_options.bootstrap_replicates, 20, 100000));
+  {
+    const Section cost(mo.get("cost"), "metric_options.cost", mo.key_mark("cost"),
+                       {"rack_per_kg", "pinion_per_kg", "per_support", "rack_length"},
+                       "{rack_per_kg: 1, pinion_per_kg: 3, per_support: 400, rack_length: 30 m}");
+    metrics::CostWeights& w = spec.metric_options.cost;
+    w.rack_per_kg = cost.number("rack_per_kg", w.rack_per_kg, 0, false);
+    w.pinion_per_kg = cost.number("pinion_per_kg", w.pinion_per_kg, 0, false);
+    w.per_support = cost.number("per_support", w.per_support, 0, false);
+    w.rack_length = cost.quantity("rack_length", QuantityKind::kLength, w.rack_length, 0, false, "m");
+  }
 
   // --- solver --------------------------------------------------------------------
   const Section sv(top.get("solver"), "solver", top.key_mark("solver"),
