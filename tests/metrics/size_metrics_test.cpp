@@ -60,6 +60,8 @@ TEST(SizeMetrics, RackMassAndHeightByHand) {
   EXPECT_NEAR(value(d, "rack_mass_per_metre"), per_metre, 1e-9);
   EXPECT_NEAR(per_metre, 36.07, 0.01);
   EXPECT_NEAR(value(d, "rack_section_height"), 0.080 + 0.0225, 1e-12);
+  EXPECT_NEAR(value(d, "face_width_ratio"), 5.0, 1e-12);  // 50 mm / 10 mm
+  EXPECT_NEAR(value(gantry({"rack.face_width=30 mm"}), "face_width_ratio"), 3.0, 1e-12);  // the narrower face
 }
 
 TEST(SizeMetrics, PinionMassIsDensityFaceWidthAndOutlineLessBore) {

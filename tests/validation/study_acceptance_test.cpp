@@ -317,3 +317,54 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
 
 }  // namespace
 }  // namespace rackopt::study
+
+namespace rackopt::study {
+namespace {
+
+// ---------------------------------------------------------------- gantry sizing
+
+// studies/gantry_sizing.yaml minimizes the cost per metre: it must land on a
+// small module (not the largest offered, where an objective blind to size
+// would go), feasible by our own re-check, and no design of the next smaller
+// module (a grid over its face width and pressure angle at the cheapest
+// support spacing) may be both feasible and cheaper.
+TEST(StudyAcceptance, GantrySizingLandsOnASmallModuleThatTheNextSmallerCannotUndercut) {
+  const StudySpec spec = load_study_file(kStudies + "gantry_sizing.yaml");
+  const StudyResult a = run_study(spec, options_in(fresh_dir("gantry"), 1));
+  ASSERT_TRUE(a.best && a.best->feasible) << a.status;
+  const std::size_t im = variable_index(spec, "pinion.module");
+  const std::vector<double>& modules = spec.variables[im].values;
+  const double m_opt = a.best->x[im];
+  EXPECT_LT(m_opt, modules.back());
+  EXPECT_LE(m_opt, 6e-3) << "a cost objective should not need a large module here";
+  expect_inside_bounds(spec, a.best->x, "gantry optimum");
+  const metrics::MetricValues v = evaluate_ourselves(spec, a.best->x);
+  expect_constraints_hold(spec, v, "gantry optimum");
+  const double cost = a.best->objectives[0];
+  EXPECT_EQ(value_of(v, "cost_per_metre").value, cost);
+
+  const auto below = std::find(modules.begin(), modules.end(), m_opt);
+  ASSERT_NE(below, modules.begin()) << "the optimum is the smallest module offered: widen the list";
+  StudySpec grid = spec;
+  grid.kind = StudyKind::kSweep;
+  grid.sweep.method = SweepSpec::Method::kGrid;
+  grid.variables[im].values = {*(below - 1)};
+  grid.variables[im].lower = grid.variables[im].upper = *(below - 1);
+  grid.variables[variable_index(grid, "pinion.face_width")].levels = 60;
+  grid.variables[variable_index(grid, "pinion.pressure_angle")].levels = 9;
+  DesignVariable& span = grid.variables[variable_index(grid, "rack.span")];
+  span.values = {span.upper};  // the support cost falls with the span; nothing else depends on it here
+  span.lower = span.upper;
+  const StudyResult g = run_study(grid, options_in(fresh_dir("gantry_grid"), 2));
+  ASSERT_EQ(g.sweep_points.size(), 60u * 9u);
+  for (const DesignResult& p : g.sweep_points) {
+    if (p.feasible) {
+      EXPECT_GE(p.objectives[0], cost * (1 - 1e-3)) << "module " << *(below - 1);
+    }
+  }
+  std::printf("gantry sizing: module %.1f mm, cost %.4g per metre (%zu evaluations); next smaller module: %s\n",
+              m_opt * 1e3, cost, a.evaluations, g.best ? "feasible but dearer" : "no feasible design");
+}
+
+}  // namespace
+}  // namespace rackopt::study

@@ -1,5 +1,6 @@
 // Size, mass, torque, power and cost: what "sizing" means when it must mean
 // small. docs/metrics.md gives every formula and its hand check.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -57,6 +58,14 @@ void append_size_metrics(std::vector<MetricDefinition>& r) {
                [](const ModelResults& m, const MetricRequest&) {
                  const PinionSpec& p = m.drive->pinion;
                  return MetricOutcome{p.module * p.teeth + 2 * (p.addendum_coef + p.profile_shift) * p.module};
+               }});
+  r.push_back({"face_width_ratio", "-", QuantityKind::kDimensionless, "",
+               "common face width over module, b/m: alignment and load distribution across the face "
+               "(rules of thumb: 6..12 for mounted rack drives, up to 20 on rigid precise housings)",
+               none, 0, "", true, {}, "b = min(pinion, rack face width)",
+               [](const ModelResults& m, const MetricRequest&) {
+                 const Drive& d = *m.drive;
+                 return MetricOutcome{std::min(d.pinion.face_width, rack_face_width(d)) / d.pinion.module};
                }});
   r.push_back({"pinion_mass", "kg", QuantityKind::kMass, "kg",
                "pinion mass: density x face width x the area of the generated outline (tips, involutes, "
