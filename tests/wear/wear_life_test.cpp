@@ -12,6 +12,7 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/wear/contact.hpp"
 #include "rackopt/wear/wear_life.hpp"
 #include "wear_drives.hpp"
 
@@ -74,18 +75,37 @@ TEST(WearLife, ClosedFormPolynomialHardness) {
   EXPECT_NEAR(r.life_cycles / (G / (d.wear.coefficient * w * g_max)), 1.0, 1e-9);
 }
 
+// Sliding distance of a pinion flank point through a band of half-width a,
+// per unit band width, by quadrature: the point at s is in the band while
+// the involute arc to the contact centre c, |c^2 - s^2|/(2 r_b), is at most
+// a, and the contact slides |c - s_P| per unit of c/r_b.
+double involute_window_sliding(double s, double a, double rb, double sP) {
+  const double lo = std::sqrt(std::max(0.0, s * s - 2 * a * rb)), hi = std::sqrt(s * s + 2 * a * rb);
+  const int n = 20000;
+  double sum = 0;
+  for (int j = 0; j < n; ++j) sum += std::abs(lo + (j + 0.5) * (hi - lo) / n - sP);
+  return sum * (hi - lo) / n / rb / (2 * a);
+}
+
 // With the Hertz band average, points whose band lies inside a constant-load
-// stretch still wear exactly k w g per pass (the elliptic weight integrates to 1).
+// stretch still wear exactly k w g per pass (the elliptic weight integrates
+// to 1): g = |s - s_P|/s_P on the rack; on the pinion g is the sliding over
+// the band's exact window on the involute, which is |s - s_P|/s to second
+// order in a r_b/s^2 (here within 0.3 %).
 TEST(WearLife, BandAverageKeepsConstantLoadExact) {
   Drive d = constant_hardness_drive();
   const WearModel model(d);
   const WearModel::PassWear pw = model.initial_wear_per_pass({.contact_ratio = 1.0});
   const double sP = model.geometry().path.s_pitch, w = d.load.force / 0.120, k = d.wear.coefficient / kH0;
+  const double rb = model.geometry().pinion.base_radius;
+  const double e_star = effective_modulus(d.pinion.material, d.rack.material);
   const std::size_t n = pw.rack.s.size();
   for (std::size_t i = n / 4; i < 3 * n / 4; ++i) {
     const double s = pw.rack.s[i];
     EXPECT_NEAR(pw.rack.depth[i], k * w * std::abs(s - sP) / sP, 1e-12 * k * w) << s;
-    EXPECT_NEAR(pw.pinion.depth[i], k * w * std::abs(s - sP) / s, 1e-12 * k * w) << s;
+    const double a = hertz_line_contact(w, s, e_star).half_width;
+    EXPECT_NEAR(pw.pinion.depth[i], k * w * involute_window_sliding(s, a, rb, sP), 1e-7 * k * w) << s;
+    EXPECT_NEAR(pw.pinion.depth[i], k * w * std::abs(s - sP) / s, 3e-3 * k * w * std::abs(s - sP) / s) << s;
   }
   // At the path ends only half the band is on the path.
   EXPECT_NEAR(pw.load_per_width.back() / w, 0.5, 1e-9);
@@ -274,7 +294,10 @@ TEST(WearLife, PitchPointOnAProfilePointWearsNothing) {
     const WearModel::PassWear pw = m.initial_wear_per_pass({.contact_ratio = eps});
     ASSERT_NEAR(pw.rack.s[i], g.path.s_pitch, 1e-12);
     EXPECT_LT(pw.rack.depth[i], 1e-12 * max_of(pw.rack.depth));
-    EXPECT_LT(pw.pinion.depth[i], 1e-12 * max_of(pw.pinion.depth));
+    // The pinion point at s_P slides while the contact centre passes on either
+    // side of it within the band: a r_b/(2 s_P^2) per unit band width, about
+    // 2 % here against a largest sliding ratio near 0.5.
+    EXPECT_LT(pw.pinion.depth[i], (band ? 0.1 : 1e-12) * max_of(pw.pinion.depth));
     const WearLifeResult r = m.life({.contact_ratio = eps});
     EXPECT_TRUE(std::isfinite(r.life_cycles) && r.life_cycles > 0);
     EXPECT_LT(r.rack.depth[i], 0.05 * r.max_depth);
@@ -382,6 +405,46 @@ TEST(WearLife, Cost) {
               thousand * 1e3, thousand_frozen * 1e3);
   EXPECT_GT(sink, 0);
   EXPECT_LT(one, 0.05);
+}
+
+}  // namespace
+}  // namespace rackopt
+
+namespace rackopt {
+namespace {
+
+// A path that starts next to the pinion base circle (interference ignored,
+// so the start is the rack tip line's crossing s_A, set by the clearance):
+// the thin-band law |s - s_P|/s made the wear per pass grow as 1/s_start and
+// the life collapse in proportion to s_start (0.05 mm vs 5 mm of start: a
+// hundredfold). The exact band window bounds the sliding, so the life tends
+// to a finite limit, changes smoothly, and the model says so in a warning.
+TEST(WearLife, StartAtTheBaseCircleHasAFiniteLifeAndAWarning) {
+  Drive d = test::ship_lift_wear();
+  d.pinion.teeth = 17;
+  d.pinion.profile_shift = 0;
+  d.effects.interference_limit = false;
+  d.wear.update_profile = false;
+  auto life_with_start = [&](double s_start) {
+    Drive e = d;
+    const MeshGeometry g = build_mesh_geometry(e);
+    // s_A = s_P - (h_a2 m - x m - clearance) / sin a0
+    const double sa = std::sin(e.pinion.pressure_angle);
+    e.mounting.clearance = (s_start - g.path.s_pitch) * sa + e.rack.addendum_coef * e.pinion.module;
+    const WearModel m(e);
+    EXPECT_NEAR(m.geometry().path.s_start, s_start, 1e-9);
+    return m.life();
+  };
+  const WearLifeResult at_base = life_with_start(0.05e-3), near = life_with_start(0.5e-3),
+                       clear = life_with_start(5e-3);
+  // The thin-band law gives lives in the ratio of the starts: 0.1 and 0.1.
+  EXPECT_GT(at_base.life_cycles, 0.5 * near.life_cycles);
+  EXPECT_GT(near.life_cycles, 0.4 * clear.life_cycles);
+  EXPECT_LT(at_base.life_cycles, near.life_cycles * (1 + 1e-9));  // a start nearer the base circle wears more
+  EXPECT_LT(near.life_cycles, clear.life_cycles);
+  bool warned = false;
+  for (const std::string& w : at_base.warnings) warned = warned || w.find("near the pinion base circle") != std::string::npos;
+  EXPECT_TRUE(warned);
 }
 
 }  // namespace

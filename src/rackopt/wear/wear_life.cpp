@@ -115,8 +115,44 @@ struct Path {
   // Band-averaging weights per member (CSR): <w>_i = sum_k val[k] P[idx[k]].
   std::array<std::vector<int>, 2> w_begin, w_idx;
   std::array<std::vector<double>, 2> w_val;
-  std::array<std::vector<double>, 2> slide;  // |s - s_P| / v_i per point
+  std::array<std::vector<double>, 2> slide;  // |s - s_P| / v_i per point (pinion: exact band window, below)
+  // Smallest ratio, over the pinion points, of the exact-window sliding to
+  // the thin-band law |s - s_P|/s (1 = the thin band holds everywhere).
+  double base_circle_window = 1.0;
 };
+
+// Sliding of a pinion flank point through the Hertz band, per unit band
+// width 2a, with the band's exact window on the involute.
+//
+// The thin-band law |s - s_P|/s takes the band short against the involute's
+// radius of curvature s: the point at s is under load while the contact
+// centre c is within a r_b/s of it. Near the base circle the curvature
+// radius and the rolling speed v1 = omega s both go to zero, the thin-band
+// window and the sliding ratio grow without bound, and a path starting a
+// few micrometres above the base circle would wear through at once. The
+// exact window follows from the involute arc length (c^2 - s^2)/(2 r_b)
+// between the point and the contact centre: the point is in the band while
+// |c^2 - s^2| <= 2 a r_b, i.e. for c in [c_lo, c_hi] = [sqrt(max(0, s^2 -
+// 2 a r_b)), sqrt(s^2 + 2 a r_b)], during which the contact slides at
+// omega |c - s_P| while c advances at omega r_b. The sliding distance is
+// (1/r_b) * integral of |c - s_P| over that window: bounded (the window is
+// at most sqrt(2 a r_b) long) and equal to 2a |s - s_P|/s to second order
+// in a r_b/s^2 where the thin band holds (docs/models/wear.md).
+struct InvoluteWindow {
+  double lo = 0, hi = 0;  // contact-centre window on the LOA [m]
+  double slide = 0;       // sliding distance / (2a)
+};
+InvoluteWindow involute_band_window(double s, double a, double rb, double s_pitch) {
+  const double q = 2 * a * rb;
+  const double sc = std::max(s, 0.0);
+  InvoluteWindow w;
+  w.lo = std::sqrt(std::max(0.0, sc * sc - q));
+  w.hi = std::sqrt(sc * sc + q);
+  // integral of |c - s_P| dc over [lo, hi]
+  auto prim = [&](double c) { return 0.5 * (c - s_pitch) * std::abs(c - s_pitch); };
+  w.slide = (prim(w.hi) - prim(w.lo)) / rb / (2 * a);
+  return w;
+}
 
 }  // namespace
 
@@ -399,11 +435,21 @@ struct WearModel::Impl {
           for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
           const double a = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
           // Surface distance per unit LOA: rack flank tan a0, pinion involute s/r_b.
-          const double J = mb == kRack ? ta : std::max(c, s_floor) / rb;
-          const double L = a / J;
-          if (L > 1e-12 * pb) {
-            band_weights(p, c, L, idx, val);
-            done = true;
+          if (mb == kRack) {
+            const double L = a / ta;
+            if (L > 1e-12 * pb) {
+              band_weights(p, c, L, idx, val);
+              done = true;
+            }
+          } else if (a > 1e-12 * pb) {
+            const InvoluteWindow win = involute_band_window(c, a, rb, sP);
+            if (win.hi - win.lo > 2e-12 * pb) {
+              band_weights(p, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo), idx, val);
+              const double thin = p.slide[kPinion][i];
+              if (thin > 0) p.base_circle_window = std::min(p.base_circle_window, win.slide / thin);
+              p.slide[kPinion][i] = win.slide;
+              done = true;
+            }
           }
         }
         if (!done) pointwise_weights(p, c, idx, val);
@@ -792,8 +838,17 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   }
   if (!(per_year > 0))
     res.warnings.push_back("duty.rack_meshes_per_year not given: life in years not computed (0)");
-  if (s_start < s_floor)
+  if (s_start < s_floor && !opt.hertz_band)
     res.warnings.push_back("path starts at or below the pinion base circle: pinion rolling speed floored at 1e-3 r_b");
+  if (p.base_circle_window < 0.9) {
+    std::ostringstream o;
+    o << "contact starts near the pinion base circle (s = " << s_start * 1e3
+      << " mm): the Hertz band reaches across the involute's small curvature radius there; its sliding is "
+         "integrated over the band's exact window on the involute, "
+      << std::lround(100 * (1 - p.base_circle_window))
+      << " % below the thin-band law at the first point (docs/models/wear.md)";
+    res.warnings.push_back(o.str());
+  }
 
   res.load_solves = solves;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
