@@ -9,7 +9,9 @@
 #include "cli.hpp"
 #include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/geometry/pressure_angle_range.hpp"
 #include "rackopt/output/stiffness_report.hpp"
+#include "rackopt/units/units.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -19,6 +21,15 @@ int cmd_check(const Args& a) {
   const rackopt::Drive drive = rackopt::load_problem(a.file, a.overrides);
   const rackopt::MeshStiffnessModel model(drive);
   std::string text = rackopt::geometry_summary(drive, model.geometry());
+  const rackopt::PressureAngleRange range = rackopt::feasible_pressure_angles(drive);
+  {
+    auto limit = [](const std::string& code, const char* end) {
+      return code.empty() ? std::string("the ") + end + " of the scanned 5..45 deg" : code;
+    };
+    text += "  pressure angles this cutter, tooth count, shift and clearance allow: " +
+            rackopt::format_angle_deg(range.lower, 5) + " .. " + rackopt::format_angle_deg(range.upper, 5) +
+            " (below: " + limit(range.lower_limit, "end") + "; above: " + limit(range.upper_limit, "end") + ")\n";
+  }
   for (std::size_t i = model.geometry().warnings.size(); i < model.warnings().size(); ++i) {
     text += "  warning: " + model.warnings()[i] + "\n";
   }
@@ -27,6 +38,12 @@ int cmd_check(const Args& a) {
     j.begin_object();
     j.key("ok").value(true);
     j.key("contact_ratio").value(model.geometry().path.contact_ratio);
+    j.key("pressure_angle_range").begin_object();
+    j.key("lower").value(range.lower);
+    j.key("upper").value(range.upper);
+    j.key("lower_limit").value(range.lower_limit);
+    j.key("upper_limit").value(range.upper_limit);
+    j.end_object();
     j.key("warnings").begin_array();
     for (const auto& w : model.warnings()) j.value(w);
     j.end_array();
