@@ -313,7 +313,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
                                          "exact quantile of " + out.exact.input))
       out.warnings.push_back(*w);
   }
-  if (n > 1) {
+  if (out.warnings.empty() && !out.exact.available && n > 1) {  // one warning per R: the exact life when there is one
     for (const reliability::LifeAtReliability& la : out.summary.life) {
       const reliability::LifeInterval& li = la.fit ? *la.fit : la.empirical;
       if (!li.lower_bounded) continue;
