@@ -142,8 +142,12 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   } else {
     constexpr double kTail = 1e-9;
     const double ql = std::max(qa, kTail), qh = std::min(qb, 1.0 - kTail);
-    const double lo = std::max(xa, dist[0].quantile(ql)), hi = std::min(xb, dist[0].quantile(qh));
-    if (!(qh > ql) || !(hi > lo)) {
+    // Quantiles only strictly inside (0, 1): a scatter wholly outside the
+    // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
+    const bool inside = qh > ql;
+    const double lo = inside ? std::max(xa, dist[0].quantile(ql)) : 0.0;
+    const double hi = inside ? std::min(xb, dist[0].quantile(qh)) : 0.0;
+    if (!inside || !(hi > lo)) {
       tr.not_used = "almost every sample fails at once";
     } else {
       reliability::FunctionTableOptions to;
