@@ -124,6 +124,24 @@ TEST(DesignScatter, CoefficientFactorGivesALifeAtRProportionalToOneOverK) {
             << r1.nominal.life_years << ", " << r2.nominal.life_years << " y)\n";
 }
 
+// The hardness case: a constant surface hardness scattered by a factor
+// (median 1). Archard's depth grows as n / H, so the life is proportional to
+// H: the life at R = 0.9 is the nominal life times F_0.1 = exp(sigma z_0.1)
+// and halves with the design's hardness (it stayed put with an absolute
+// hardness distribution).
+TEST(DesignScatter, HardnessFactorFollowsTheDesignHardness) {
+  const std::string factor = "reliability.random[0]={input: surface_hardness, distribution: lognormal, sigma: 0.1}";
+  const Drive hard = load_problem(ship_lift_path(), {"wear.hardness={kind: constant, surface: 600 HB}", factor});
+  const Drive soft = load_problem(ship_lift_path(), {"wear.hardness={kind: constant, surface: 300 HB}", factor});
+  const WearReliabilityResult a = life_at_090(hard), b = life_at_090(soft);
+  ASSERT_TRUE(a.exact.available);
+  EXPECT_TRUE(a.exact.life_increases);
+  const double ta = a.exact.life_at_R_years.at(0), tb = b.exact.life_at_R_years.at(0);
+  EXPECT_NEAR(tb / ta, 0.5, 1e-6);
+  EXPECT_NEAR(ta, a.nominal.life_years * std::exp(0.1 * kZ10), 1e-6 * ta);
+  EXPECT_NEAR(tb, b.nominal.life_years * std::exp(0.1 * kZ10), 1e-6 * tb);
+}
+
 // A normal load with a cv around the design's force: its centre is the
 // design's force, its sd cv times it.
 TEST(DesignScatter, NormalCvAndShiftAroundTheDesign) {

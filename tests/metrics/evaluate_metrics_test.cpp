@@ -223,6 +223,28 @@ TEST(EvaluateMetrics, WearLifeAtRAboveTheNominalLifeWarns) {
   EXPECT_FALSE(warned(b));
 }
 
+// The metric follows the design: 4 mm of clearance lowers the shipped ship
+// lift's wear_life_at_R(0.9) with its nominal life, and it is the exact
+// quantile life run_wear_reliability reports for that design
+// (tests/life/design_scatter_test.cpp checks that life independently).
+TEST(EvaluateMetrics, WearLifeAtRFollowsTheClearance) {
+  const Drive d0 = problem("ship_lift");
+  const Drive d4 = load_problem(path("ship_lift"), {"mounting.clearance=4 mm"});
+  const MetricValues v0 = eval(d0, {"wear_life", "wear_life_at_R(0.9)"});
+  const MetricValues v4 = eval(d4, {"wear_life", "wear_life_at_R(0.9)"});
+  ASSERT_TRUE(v0.all_ok());
+  ASSERT_TRUE(v4.all_ok());
+  EXPECT_LT(v4.values[0].value, v0.values[0].value - 5 * kSecondsPerYear);
+  EXPECT_LT(v4.values[1].value, v0.values[1].value - 3 * kSecondsPerYear);
+  Drive r4 = d4;
+  r4.reliability.reliabilities = {0.9};
+  WearReliabilityOptions ro = wear_reliability_options(r4);
+  ro.samples = 1;
+  ro.threads = 1;
+  ro.life_table = false;
+  EXPECT_DOUBLE_EQ(v4.values[1].value, run_wear_reliability(r4, ro).exact.life_at_R_years.at(0) * kSecondsPerYear);
+}
+
 // Two random inputs: Monte Carlo through run_wear_reliability with a fixed
 // seed, so the same design gives the same number (common random numbers).
 TEST(EvaluateMetrics, WearLifeAtRMonteCarloIsDeterministicAndFallsWithR) {
