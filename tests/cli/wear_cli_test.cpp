@@ -139,14 +139,81 @@ TEST(WearCli, ProblemWithoutWearIsBadInput) {
 }
 
 TEST(WearCli, ContactRatioSampledBelowOneFailsThoseSamplesOnly) {
-  // Mean 1.0: about half the samples start below 1 and fail at once; the
-  // run still completes and reports them.
-  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random[0].mean=1.05' "
+  // Mean 1.05 (1.536 - 0.486): about a third of the samples start below 1
+  // and fail at once; the run still completes and reports them.
+  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random[0].shift=-0.486' "
                           "--set 'reliability.random[0].sd=0.1' --out " + tmp_dir("below1"));
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["immediate_failures"].get<long>(), 50);
   EXPECT_EQ(j["failed_evaluations"].get<long>(), 0);
+}
+
+// Scatter that follows the design: 4 mm of clearance lowers the design's
+// contact ratio by 0.063 and the exact life at R = 0.9 with it (it stayed
+// 58.46 y when the contact ratio was an absolute N(1.44, 0.038));
+// tests/life/design_scatter_test.cpp checks the amount independently.
+TEST(WearCli, ClearanceMovesTheLifeAtR) {
+  const CliResult a = run("wear problems/ship_lift.yaml --json --samples 100 --out " + tmp_dir("clear0"));
+  const CliResult b = run("wear problems/ship_lift.yaml --json --samples 100 --set mounting.clearance='4 mm' --out " +
+                          tmp_dir("clear4"));
+  ASSERT_EQ(a.code, 0);
+  ASSERT_EQ(b.code, 0);
+  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  EXPECT_LT(jb["life_years"].get<double>(), ja["life_years"].get<double>() - 5.0);
+  const double t0 = ja["exact"]["life_at_R"]["0.9"].get<double>(), t4 = jb["exact"]["life_at_R"]["0.9"].get<double>();
+  EXPECT_LT(t4, t0 - 3.0);
+  EXPECT_LT(t4, jb["life_years"].get<double>());
+}
+
+CliResult run_with_stderr(const std::string& args) {
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args + " 2>&1";
+  CliResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// An absolute contact ratio and a --set of the clearance: the life at R
+// would ignore the clearance, so it is bad input (exit 2) naming both keys,
+// for wear and for stiffness alike.
+TEST(WearCli, AbsoluteInputWithAnOverrideThatMovesItIsBadInput) {
+  const std::string absolute = " --set 'reliability.random[0]={input: contact_ratio, distribution: normal, "
+                               "absolute: true, mean: 1.44, sd: 0.038}'";
+  for (const char* command : {"wear", "stiffness"}) {
+    const CliResult r = run_with_stderr(std::string(command) + " problems/ship_lift.yaml" + absolute +
+                                        " --set mounting.clearance='4 mm' --out " + tmp_dir("abs"));
+    EXPECT_EQ(r.code, 2) << r.out;
+    EXPECT_NE(r.out.find("mounting.clearance"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("reliability.random[0]"), std::string::npos) << r.out;
+  }
+  const CliResult ok = run("wear problems/ship_lift.yaml --json --samples 20" + absolute + " --out " + tmp_dir("abs_ok"));
+  EXPECT_EQ(ok.code, 0);
+}
+
+// A favourable shift (the contact ratio drawn 0.05 above the design's at
+// 4 mm clearance) gives a life at R = 0.9 above the nominal life: a warning
+// in the output.
+TEST(WearCli, LifeAtRAboveTheNominalLifeIsAWarning) {
+  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set mounting.clearance='4 mm' "
+                          "--set 'reliability.random[0]={input: contact_ratio, distribution: normal, shift: 0.05, "
+                          "sd: 0.005}' --out " + tmp_dir("warn"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["exact"]["life_at_R"]["0.9"].get<double>(), j["life_years"].get<double>());
+  bool warned = false;
+  for (const auto& w : j["warnings"]) warned |= w.get<std::string>().find("above the nominal wear life") != std::string::npos;
+  EXPECT_TRUE(warned) << j["warnings"].dump();
+  // The shipped scatter (shifted below the design) does not warn.
+  const CliResult s = run("wear problems/ship_lift.yaml --json --samples 200 --out " + tmp_dir("nowarn"));
+  ASSERT_EQ(s.code, 0);
+  for (const auto& w : nlohmann::json::parse(s.out)["warnings"])
+    EXPECT_EQ(w.get<std::string>().find("above the nominal"), std::string::npos) << w;
 }
 
 }  // namespace

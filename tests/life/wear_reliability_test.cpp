@@ -132,6 +132,7 @@ TEST(WearReliability, LifeTableDoesNotSmearAFailureModeSwitch) {
   d.wear.update_profile = true;
   d.wear.profile_points = 60;  // cost
   d.wear.min_contact_ratio = 1.46;
+  d.reliability.inputs.front().absolute = true;  // the contact ratio itself: N(1.50, 0.015)
   d.reliability.inputs.front().a = 1.50;
   d.reliability.inputs.front().b = 0.015;
   WearReliabilityOptions o;
@@ -177,9 +178,29 @@ TEST(WearReliability, LifeTableDoesNotSmearAFailureModeSwitch) {
   std::cout << "worst relative life error of the table: " << worst << "\n";
 }
 
+// A scatter shifted wholly above the largest contact ratio (a design at
+// zero clearance with a positive shift): every sample fails at once, the
+// lives at R are 0, and nothing throws (an optimizer sees an infeasible-free
+// but worthless design, not a crash).
+TEST(WearReliability, ScatterWhollyAboveTheLargestContactRatioFailsEverySample) {
+  Drive d = ship_lift();
+  d.reliability.inputs.front().a = 1.0;  // shift: eps around 2.5, above eps_max = 1.536
+  d.reliability.inputs.front().b = 0.01;
+  WearReliabilityOptions o;
+  o.samples = 32;
+  o.bootstrap_replicates = 20;
+  const WearReliabilityResult r = run_wear_reliability(d, o);
+  EXPECT_EQ(r.summary.immediate_failures, 32u);
+  EXPECT_FALSE(r.table.used);
+  ASSERT_TRUE(r.exact.available);
+  for (double t : r.exact.life_at_R_years) EXPECT_EQ(t, 0.0);
+}
+
 TEST(WearReliability, ImpossibleSamplesFailAtOnceWithoutStoppingTheRun) {
   Drive d = ship_lift();
-  d.reliability.inputs.front().a = 1.536;  // half the samples above the largest possible contact ratio
+  // Centred on the design's own contact ratio, which at the shipped zero
+  // clearance is the largest possible: half the samples above it.
+  d.reliability.inputs.front().a = 0.0;
   d.reliability.inputs.front().b = 0.05;
   WearReliabilityOptions o;
   o.samples = 64;

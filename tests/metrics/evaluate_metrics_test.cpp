@@ -161,6 +161,7 @@ TEST(EvaluateMetrics, WearLifeAtRExactPathInsideMonteCarloIntervalAndFallsWithR)
   RandomInput eps;
   eps.key = "contact_ratio";
   eps.distribution = RandomInput::Distribution::kNormal;
+  eps.absolute = true;  // the contact ratio itself (the design is not varied here)
   eps.a = 1.45;  // 4 sd below eps_max = 1.536 (ship_lift.yaml), 7 sd above [eps] = 1.3
   eps.b = 0.02;
   d.reliability.inputs = {eps};
@@ -189,6 +190,61 @@ TEST(EvaluateMetrics, WearLifeAtRExactPathInsideMonteCarloIntervalAndFallsWithR)
   EXPECT_GT(v.values[2].value, 0.0);
 }
 
+// A life at R above the nominal life is a warning of the metric: an
+// absolute coefficient distribution (median 3e-6) on a design whose own
+// coefficient is 1e-4 (wear 33x faster) says R = 0.9 lives far above the
+// design's nominal life. Around the design (a factor with median 1) the
+// same scatter gives no warning.
+TEST(EvaluateMetrics, WearLifeAtRAboveTheNominalLifeWarns) {
+  Drive d = problem("ship_lift");
+  d.wear.update_profile = false;
+  d.wear.coefficient = 1e-4;
+  RandomInput k;
+  k.key = "wear.coefficient";
+  k.distribution = RandomInput::Distribution::kLognormal;
+  k.absolute = true;
+  k.a = 3e-6;
+  k.b = 0.3;
+  d.reliability.inputs = {k};
+  auto warned = [](const MetricValues& v) {
+    for (const std::string& w : v.warnings)
+      if (w.find("above the nominal wear life") != std::string::npos) return true;
+    return false;
+  };
+  const MetricValues a = eval(d, {"wear_life", "wear_life_at_R(0.9)"});
+  ASSERT_TRUE(a.all_ok());
+  EXPECT_GT(a.values[1].value, a.values[0].value);
+  EXPECT_TRUE(warned(a));
+  d.reliability.inputs[0].absolute = false;
+  d.reliability.inputs[0].a = 1.0;  // median factor: the design's own coefficient
+  const MetricValues b = eval(d, {"wear_life", "wear_life_at_R(0.9)"});
+  ASSERT_TRUE(b.all_ok());
+  EXPECT_LT(b.values[1].value, b.values[0].value);
+  EXPECT_FALSE(warned(b));
+}
+
+// The metric follows the design: 4 mm of clearance lowers the shipped ship
+// lift's wear_life_at_R(0.9) with its nominal life, and it is the exact
+// quantile life run_wear_reliability reports for that design
+// (tests/life/design_scatter_test.cpp checks that life independently).
+TEST(EvaluateMetrics, WearLifeAtRFollowsTheClearance) {
+  const Drive d0 = problem("ship_lift");
+  const Drive d4 = load_problem(path("ship_lift"), {"mounting.clearance=4 mm"});
+  const MetricValues v0 = eval(d0, {"wear_life", "wear_life_at_R(0.9)"});
+  const MetricValues v4 = eval(d4, {"wear_life", "wear_life_at_R(0.9)"});
+  ASSERT_TRUE(v0.all_ok());
+  ASSERT_TRUE(v4.all_ok());
+  EXPECT_LT(v4.values[0].value, v0.values[0].value - 5 * kSecondsPerYear);
+  EXPECT_LT(v4.values[1].value, v0.values[1].value - 3 * kSecondsPerYear);
+  Drive r4 = d4;
+  r4.reliability.reliabilities = {0.9};
+  WearReliabilityOptions ro = wear_reliability_options(r4);
+  ro.samples = 1;
+  ro.threads = 1;
+  ro.life_table = false;
+  EXPECT_DOUBLE_EQ(v4.values[1].value, run_wear_reliability(r4, ro).exact.life_at_R_years.at(0) * kSecondsPerYear);
+}
+
 // Two random inputs: Monte Carlo through run_wear_reliability with a fixed
 // seed, so the same design gives the same number (common random numbers).
 TEST(EvaluateMetrics, WearLifeAtRMonteCarloIsDeterministicAndFallsWithR) {
@@ -197,6 +253,7 @@ TEST(EvaluateMetrics, WearLifeAtRMonteCarloIsDeterministicAndFallsWithR) {
   RandomInput k;
   k.key = "wear.coefficient";
   k.distribution = RandomInput::Distribution::kLognormal;
+  k.absolute = true;  // the coefficient itself (the design is not varied here)
   k.a = 3e-6;
   k.b = 0.2;
   d.reliability.inputs.push_back(k);

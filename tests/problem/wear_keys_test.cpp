@@ -114,11 +114,14 @@ TEST(WearKeys, ShipLiftSeed004Data) {
   ASSERT_EQ(r.inputs.size(), 1u);
   EXPECT_EQ(r.inputs[0].key, "contact_ratio");
   EXPECT_EQ(r.inputs[0].distribution, RandomInput::Distribution::kNormal);
-  // Calibrated against the seed's R(t) table: mean below the largest contact
-  // ratio this pair can have (zero clearance: 1.536, physics.md 12.2), with
-  // about 0.6 % of the samples above it (z = 2.5).
+  // Around the design's own contact ratio (the paper's zero clearance: 1.536,
+  // the largest this pair can have, physics.md 12.2), calibrated against the
+  // seed's R(t) table: shifted below it, with about 0.6 % of the samples
+  // above it (z = 2.5).
+  EXPECT_FALSE(r.inputs[0].absolute);
   EXPECT_GT(r.inputs[0].b, 0.0);
-  EXPECT_NEAR((1.536 - r.inputs[0].a) / r.inputs[0].b, 2.5, 0.1);
+  EXPECT_EQ(r.inputs[0].cv, 0.0);
+  EXPECT_NEAR(-r.inputs[0].a / r.inputs[0].b, 2.5, 0.1);
 }
 
 // ------------------------------------------------------------------ defaults
@@ -185,10 +188,10 @@ TEST(WearKeys, EveryKeyToSI) {
       "  times: [\"1 d\", 2 d, 3]\n"
       "  ks_level: 0.1\n"
       "  random:\n"
-      "    - {input: contact_ratio, distribution: normal, mean: 1.5, sd: 0.03}\n"
-      "    - {input: wear_coefficient, distribution: lognormal, median: 3e-6, sigma: 0.5}\n"
-      "    - {input: load, distribution: uniform, lower: 900 kN, upper: 1 MN}\n"
-      "    - {input: surface_hardness, distribution: weibull, scale: 600 HB, shape: 20}\n";
+      "    - {input: contact_ratio, distribution: normal, absolute: true, mean: 1.5, sd: 0.03}\n"
+      "    - {input: wear_coefficient, distribution: lognormal, absolute: true, median: 3e-6, sigma: 0.5}\n"
+      "    - {input: load, distribution: uniform, absolute: true, lower: 900 kN, upper: 1 MN}\n"
+      "    - {input: surface_hardness, distribution: weibull, absolute: true, scale: 600 HB, shape: 20}\n";
   const Drive d = load_problem_text(text, "t.yaml");
   const WearSpec& w = d.wear;
   EXPECT_DOUBLE_EQ(w.coefficient, 2.5e-7);
@@ -251,6 +254,7 @@ TEST(WearKeys, EveryKeyToSI) {
   EXPECT_EQ(rel.inputs[3].distribution, D::kWeibull);
   EXPECT_DOUBLE_EQ(rel.inputs[3].a, 600 * 9.80665e6);
   EXPECT_DOUBLE_EQ(rel.inputs[3].b, 20.0);
+  for (const RandomInput& in : rel.inputs) EXPECT_TRUE(in.absolute) << in.key;
 }
 
 TEST(WearKeys, PolynomialAndTableUnitsApplyToBareNumbers) {
@@ -295,7 +299,7 @@ TEST(WearKeys, OverridesReachNestedKeys) {
                                      "wear.rack_hardness={kind: constant, surface: 500 HB}",
                                      "wear.profile_points=200", "duty.rack_meshes_per_year=1000",
                                      "reliability.samples=100", "reliability.times=[10 yr, 20 yr]",
-                                     "reliability.random[0]={input: load, distribution: normal, mean: 10 kN, sd: 1 kN}"});
+                                     "reliability.random[0]={input: load, distribution: normal, absolute: true, mean: 10 kN, sd: 1 kN}"});
   EXPECT_DOUBLE_EQ(d.wear.coefficient, 3e-6);
   EXPECT_DOUBLE_EQ(d.wear.pinion_hardness.case_depth, 6e-3);
   EXPECT_EQ(d.wear.rack_hardness.kind, HardnessProfile::Kind::kConstant);
@@ -337,41 +341,41 @@ TEST(WearErrors, MissingAndForeignDistributionParameters) {
   expect_error(kWear +
                    "reliability:\n"
                    "  random:\n"
-                   "    - {input: load, distribution: normal, mean: 1 kN}\n",  // 15
+                   "    - {input: load, distribution: normal, absolute: true, mean: 1 kN}\n",  // 15
                {15, 7, "reliability.random[0].sd", "required key 'sd' is missing; expected a force"});
   // A parameter of another distribution: at its key.
   expect_error(kWear +
                    "reliability:\n"
                    "  random:\n"
-                   "    - {input: wear_coefficient, distribution: lognormal, median: 3e-6, sd: 0.5}\n",  // 15
-               {15, 72, "reliability.random[0].sd",
-                "'sd' is not a parameter of a lognormal distribution; its parameters: median, sigma"});
+                   "    - {input: wear_coefficient, distribution: lognormal, absolute: true, median: 3e-6, sd: 0.5}\n",  // 15
+               {15, 88, "reliability.random[0].sd",
+                "'sd' is not a parameter of an absolute lognormal distribution; its parameters: median, sigma"});
 }
 
 TEST(WearErrors, DistributionParameterRanges) {
   expect_error(kWear +
                    "reliability:\n"
                    "  random:\n"
-                   "    - {input: load, distribution: normal, mean: 1 kN, sd: 0 kN}\n",  // 15, "0 kN" at 59
-               {15, 59, "reliability.random[0].sd", "0 N is out of range; allowed: 0 N < sd"});
+                   "    - {input: load, distribution: normal, absolute: true, mean: 1 kN, sd: 0 kN}\n",  // 15, "0 kN" at 75
+               {15, 75, "reliability.random[0].sd", "0 N is out of range; allowed: 0 N < sd"});
   expect_error(kWear +
                    "reliability:\n"
                    "  random:\n"
-                   "    - {input: contact_ratio, distribution: uniform, lower: 1.5, upper: 1.4}\n",  // 15, "1.4" at 72
-               {15, 72, "reliability.random[0].upper", "allowed: 1.5 < upper (upper must exceed lower)"});
+                   "    - {input: contact_ratio, distribution: uniform, absolute: true, lower: 1.5, upper: 1.4}\n",  // 15, "1.4" at 88
+               {15, 88, "reliability.random[0].upper", "allowed: 1.5 < upper (upper must exceed lower)"});
   expect_error(kWear, {0, 0, "reliability.random[0].shape", "allowed: 0 < shape", "<command line>"},
-               {"reliability.random[0]={input: load, distribution: weibull, scale: 1 kN, shape: -2}"});
+               {"reliability.random[0]={input: load, distribution: weibull, absolute: true, scale: 1 kN, shape: -2}"});
   expect_error(kWear, {0, 0, "reliability.random[0].mean", "'HB' is a unit of a hardness but a force is expected",
                        "<command line>"},
-               {"reliability.random[0]={input: load, distribution: normal, mean: 600 HB, sd: 1 kN}"});
+               {"reliability.random[0]={input: load, distribution: normal, absolute: true, mean: 600 HB, sd: 1 kN}"});
 }
 
 TEST(WearErrors, DuplicateRandomInput) {
   expect_error(kWear +
                    "reliability:\n"                                                         // 13
                    "  random:\n"                                                            // 14
-                   "    - {input: load, distribution: normal, mean: 1 kN, sd: 0.1 kN}\n"    // 15
-                   "    - {input: load, distribution: uniform, lower: 1 kN, upper: 2 kN}\n",  // 16
+                   "    - {input: load, distribution: normal, absolute: true, mean: 1 kN, sd: 0.1 kN}\n"    // 15
+                   "    - {input: load, distribution: uniform, absolute: true, lower: 1 kN, upper: 2 kN}\n",  // 16
                {16, 15, "reliability.random[1].input",
                 "'load' is already random in reliability.random[0]; each input may appear once"});
 }

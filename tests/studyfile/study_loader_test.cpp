@@ -356,6 +356,33 @@ TEST(StudyLoaderErrors, VariableKeyMustBeNumeric) {
   expect_error(dup, t(position_of(dup, "rack.span", 1)), "variables.rack.span", {"duplicate"});
 }
 
+// A design variable or a problem override that moves the design value of a
+// random input given as an absolute distribution: the life at R would ignore
+// it, so the study is refused naming both keys. Around the design (the
+// shipped form) the same variable is fine.
+TEST(StudyLoaderErrors, AbsoluteRandomInputMovedByTheStudy) {
+  const std::string head = "study: {kind: sweep}\nproblem: ../problems/ship_lift.yaml\n"
+                           "report: [wear_life_at_R(0.9)]\n";
+  const std::string absolute = "problem_set:\n  reliability.random[0]: {input: contact_ratio, distribution: normal, "
+                               "absolute: true, mean: 1.44, sd: 0.038}\n";
+  const std::string variable = head + absolute + "variables:\n  mounting.clearance: [0 mm, 6 mm]\n";
+  expect_error(variable, t(position_of(variable, "mounting.clearance")), "variables.mounting.clearance",
+               {"contact_ratio", "reliability.random[0]", "absolute"});
+  const std::string set = head + absolute + "  mounting.clearance: 4 mm\nvariables:\n  rack.span: [1 m, 2 m]\n";
+  expect_error(set, t(position_of(set, "mounting.clearance")), "problem_set.mounting.clearance",
+               {"contact_ratio", "reliability.random[0]"});
+  const std::string cli = head + absolute + "variables:\n  rack.span: [1 m, 2 m]\n";
+  try {
+    (void)load(cli, {"problem.pinion.profile_shift=0.4"});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key_path(), "problem.pinion.profile_shift") << e.what();
+    EXPECT_NE(std::string(e.what()).find("reliability.random[0]"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW((void)load(cli));
+  EXPECT_NO_THROW((void)load(head + "variables:\n  mounting.clearance: [0 mm, 6 mm]\n"));
+}
+
 TEST(StudyLoaderErrors, Metrics) {
   const std::string unknown = kHead + "variables: {rack.span: [1 m, 3 m]}\n"
                                       "objectives: [stiffnes_fluctuation]\n";

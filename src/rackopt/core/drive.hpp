@@ -209,15 +209,33 @@ struct Duty {
   double stroke = 0;                 // length of one stroke [m]; 0 = duty given as mesh counts
 };
 
-// One uncertain input for wear-life reliability (physics.md 12).
+// One uncertain input for wear-life reliability (docs/models/reliability.md).
+//
+// By default (absolute = false) the scatter follows the design: the input is
+// drawn AROUND the design's own value v0 (contact_ratio: the nominal contact
+// ratio of the drive's geometry and clearance; wear.coefficient:
+// wear.coefficient; load: load.force; surface_hardness: the rack's surface
+// hardness, else the pinion's), so that a design variable or `--set` that
+// changes v0 moves the whole distribution (life/design_scatter.hpp):
+//   normal:    X = v0 + a + N(0, sd), sd = b, or sd = cv v0 when cv > 0
+//              (a = shift [SI unit of the key], b = sd [same unit])
+//   lognormal: X = v0 F, F lognormal with median a (the median factor, 1 =
+//              the design's value) and sigma of ln F = b (both dimensionless)
+//   uniform:   X = v0 + U(a, b), a < b offsets [SI unit of the key]
+//   weibull:   only absolute.
+// absolute = true (an explicit opt-in): a, b describe the input itself,
+// whatever the design: normal mean, sd; lognormal median, sigma of ln;
+// uniform lower, upper; weibull scale, shape, in the key's SI unit
+// (contact_ratio: the contact ratio itself; load: force [N];
+// surface_hardness [Pa]). A design key that changes the same quantity is then
+// refused (problem/random_input_keys.hpp).
 struct RandomInput {
   enum class Distribution { kNormal, kLognormal, kUniform, kWeibull };
   std::string key;  // "contact_ratio" | "wear.coefficient" | "load" | "surface_hardness"
   Distribution distribution = Distribution::kNormal;
-  // normal: mean, standard deviation; lognormal: median, sigma of ln;
-  // uniform: lower, upper; weibull: scale, shape. In the key's SI unit
-  // (contact_ratio: the contact ratio itself; load: force [N]; surface_hardness [Pa]).
+  bool absolute = false;
   double a = 0, b = 0;
+  double cv = 0;  // relative normal only: coefficient of variation (> 0 replaces b)
 };
 
 struct ReliabilitySpec {

@@ -10,6 +10,8 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/progress_bar.hpp"
+#include "rackopt/life/design_scatter.hpp"
+#include "rackopt/life/life_at_R_check.hpp"
 #include "rackopt/reliability/distribution.hpp"
 #include "rackopt/reliability/function_table.hpp"
 #include "rackopt/reliability/sampling.hpp"
@@ -41,11 +43,6 @@ std::string criterion_of_tag(int tag) {
   return c < kCriteriaCount ? kCriteria[c] : std::string("other");
 }
 
-double nominal_surface_hardness(const Drive& d) {
-  const double h = d.wear.rack_hardness.surface > 0 ? d.wear.rack_hardness.surface : d.wear.pinion_hardness.surface;
-  return h;
-}
-
 }  // namespace
 
 WearSample wear_sample_for(const Drive& d, const std::vector<RandomInput>& inputs, const std::vector<double>& x) {
@@ -60,9 +57,7 @@ WearSample wear_sample_for(const Drive& d, const std::vector<RandomInput>& input
     } else if (key == "load") {
       s.force_scale = v / d.load.force;
     } else if (key == "surface_hardness") {
-      const double h0 = nominal_surface_hardness(d);
-      if (!(h0 > 0)) throw InputError({d.source_file, 0, 0}, "reliability.random", "surface_hardness needs a surface hardness in wear.hardness");
-      s.surface_hardness_scale = v / h0;
+      s.surface_hardness_scale = v / design_value(d, key, 0.0);
     } else {
       throw InputError({d.source_file, 0, 0}, "reliability.random",
                        "unknown random input '" + key + "' (allowed: contact_ratio, wear_coefficient, load, surface_hardness)");
@@ -97,9 +92,11 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   const std::vector<RandomInput>& inputs = spec.inputs;
   if (inputs.empty()) return out;
 
+  // Each input's distribution around this design's own value (absolute
+  // inputs as given).
   std::vector<reliability::Distribution> dist;
   for (const RandomInput& in : inputs) {
-    dist.push_back(reliability::to_distribution(in));
+    dist.push_back(input_distribution(in, design_value(drive, in.key, model.nominal_contact_ratio())));
     out.input_keys.push_back(in.key);
   }
   const std::size_t n = static_cast<std::size_t>(opt.samples > 0 ? opt.samples : spec.samples);
@@ -145,8 +142,12 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   } else {
     constexpr double kTail = 1e-9;
     const double ql = std::max(qa, kTail), qh = std::min(qb, 1.0 - kTail);
-    const double lo = std::max(xa, dist[0].quantile(ql)), hi = std::min(xb, dist[0].quantile(qh));
-    if (!(qh > ql) || !(hi > lo)) {
+    // Quantiles only strictly inside (0, 1): a scatter wholly outside the
+    // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
+    const bool inside = qh > ql;
+    const double lo = inside ? std::max(xa, dist[0].quantile(ql)) : 0.0;
+    const double hi = inside ? std::min(xb, dist[0].quantile(qh)) : 0.0;
+    if (!inside || !(hi > lo)) {
       tr.not_used = "almost every sample fails at once";
     } else {
       reliability::FunctionTableOptions to;
@@ -309,6 +310,23 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   }
   out.exact_ms = ms_since(t_exact);
   out.fit_ms = ms_since(t0);
+
+  const double nominal_years = out.nominal.life_years;
+  for (std::size_t k = 0; k < out.exact.life_at_R_years.size() && k < spec.reliabilities.size(); ++k) {
+    if (auto w = life_at_R_above_nominal(spec.reliabilities[k], out.exact.life_at_R_years[k], nominal_years,
+                                         "exact quantile of " + out.exact.input))
+      out.warnings.push_back(*w);
+  }
+  if (out.warnings.empty() && !out.exact.available && n > 1) {  // one warning per R: the exact life when there is one
+    for (const reliability::LifeAtReliability& la : out.summary.life) {
+      const reliability::LifeInterval& li = la.fit ? *la.fit : la.empirical;
+      if (!li.lower_bounded) continue;
+      if (auto w = life_at_R_above_nominal(la.reliability, li.lower / kSecondsPerYear, nominal_years,
+                                           la.fit ? "lower end of the fitted interval"
+                                                  : "lower end of the empirical interval"))
+        out.warnings.push_back(*w);
+    }
+  }
   return out;
 }
 

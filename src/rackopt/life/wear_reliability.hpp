@@ -100,6 +100,11 @@ struct WearReliabilityResult {
   unsigned threads_used = 1;
   std::uint64_t seed_used = 0;  // the Monte Carlo seed in effect (options.seed, else reliability.seed)
   long samples_used = 0;        // the sample count in effect
+  // A life at R >= 0.5 above the nominal life (life/life_at_R_check.hpp),
+  // one per R: from the exact quantile path when there is one, else from the
+  // sampled summary (lower end of its interval) when more than one sample
+  // was drawn.
+  std::vector<std::string> warnings;
 };
 
 // Throws InputError when wear, duty or reliability is not configured enough

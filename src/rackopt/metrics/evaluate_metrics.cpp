@@ -257,6 +257,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       if (exact) ro.life_table = false;
       const WearReliabilityResult r = run_wear_reliability(d, ro);
       m.wear_slot.value = r.nominal;
+      for (const std::string& w : r.warnings) add_warning(out, w);  // a life at R above the nominal life
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
         if (inputs.empty()) {
           rel.life_s.push_back(r.nominal.life_years * kSecondsPerYear);

@@ -215,6 +215,7 @@ std::string wear_summary(const Drive& d, const WearReliabilityResult& r) {
     for (const std::string& w : s.warnings) o << "  warning: " << w << "\n";
   }
   for (const std::string& w : n.warnings) o << "  warning: " << w << "\n";
+  for (const std::string& w : r.warnings) o << "  warning: " << w << "\n";
   return o.str();
 }
 
@@ -319,6 +320,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("warnings").begin_array();
   for (const std::string& w : n.warnings) j.value(w);
   for (const std::string& w : s.warnings) j.value(w);
+  for (const std::string& w : r.warnings) j.value(w);
   j.end_array();
   j.key("files").begin_object();
   auto file = [&](const char* k, const std::string& v) {

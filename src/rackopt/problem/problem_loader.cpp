@@ -11,6 +11,8 @@
 
 #include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/problem/random_input_keys.hpp"
+#include "rackopt/problem/random_input_reader.hpp"
 
 namespace rackopt {
 namespace {
@@ -596,90 +598,6 @@ void read_duty(const Block& top, Drive& drive) {
   duty.pinion_meshes_per_year = duty.travel_per_year / (kPi * drive.pinion.module * drive.pinion.teeth);
 }
 
-struct RandomInputKind {
-  const char* name;       // as written in the file
-  const char* key;        // RandomInput::key
-  QuantityKind kind;      // unit kind of its values
-};
-constexpr RandomInputKind kRandomInputs[] = {
-    {"contact_ratio", "contact_ratio", QuantityKind::kDimensionless},
-    {"wear_coefficient", "wear.coefficient", QuantityKind::kDimensionless},
-    {"load", "load", QuantityKind::kForce},
-    {"surface_hardness", "surface_hardness", QuantityKind::kHardness},
-};
-
-RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
-  if (!item.is_map()) {
-    throw InputError(item.mark, path,
-                     "expected a map {input: contact_ratio, distribution: normal, mean: ..., sd: ...}, found " +
-                         item.type_name());
-  }
-  const Block b(&item, path, "", item.mark,
-                {"input", "distribution", "mean", "sd", "median", "sigma", "lower", "upper", "scale", "shape"});
-  std::vector<std::string> inputs;
-  for (const auto& r : kRandomInputs) inputs.emplace_back(r.name);
-  if (!b.has("input")) b.missing("input", "the uncertain input: " + join_names(inputs, " | "));
-  const std::string input = b.choice("input", inputs, "");
-  const RandomInputKind* which = nullptr;
-  for (const auto& r : kRandomInputs) {
-    if (input == r.name) which = &r;
-  }
-  const std::vector<std::string> distributions = {"normal", "lognormal", "uniform", "weibull"};
-  if (!b.has("distribution")) b.missing("distribution", "one of " + join_names(distributions, " | "));
-  const std::string distribution = b.choice("distribution", distributions, "");
-
-  RandomInput out;
-  out.key = which->key;
-  std::string first;
-  std::string second;
-  bool second_is_dimensionless = false;  // sigma of ln, Weibull shape
-  if (distribution == "normal") {
-    out.distribution = RandomInput::Distribution::kNormal;
-    first = "mean";
-    second = "sd";
-  } else if (distribution == "lognormal") {
-    out.distribution = RandomInput::Distribution::kLognormal;
-    first = "median";
-    second = "sigma";
-    second_is_dimensionless = true;
-  } else if (distribution == "uniform") {
-    out.distribution = RandomInput::Distribution::kUniform;
-    first = "lower";
-    second = "upper";
-  } else {
-    out.distribution = RandomInput::Distribution::kWeibull;
-    first = "scale";
-    second = "shape";
-    second_is_dimensionless = true;
-  }
-  for (const auto& e : item.entries) {
-    if (e.key != "input" && e.key != "distribution" && e.key != first && e.key != second) {
-      throw InputError(e.key_mark, b.child_path(e.key),
-                       "'" + e.key + "' is not a parameter of a " + distribution + " distribution; its parameters: " +
-                           first + ", " + second);
-    }
-  }
-  const QuantityKind first_kind = which->kind;
-  const QuantityKind second_kind = second_is_dimensionless ? QuantityKind::kDimensionless : which->kind;
-  const auto a = b.quantity(first, first_kind);
-  if (!a) b.missing(first, Block::expected_text(first_kind) + " (" + distribution + " " + first + ")");
-  const auto c = b.quantity(second, second_kind);
-  if (!c) b.missing(second, Block::expected_text(second_kind) + " (" + distribution + " " + second + ")");
-  out.a = *a;
-  out.b = *c;
-  // Every random input is a positive physical quantity.
-  b.check_range_as(first, first_kind, out.a, 0, kInf, true, true, " (" + input + " is positive)");
-  if (out.distribution == RandomInput::Distribution::kUniform) {
-    b.check_range_as(second, second_kind, out.b, out.a, kInf, true, true, " (upper must exceed lower)");
-  } else if (out.distribution == RandomInput::Distribution::kLognormal) {
-    // sigma of ln X above 5 spans e^10 = 2e4 between -1 and +1 sd: a typo, not a scatter.
-    b.check_range_as(second, second_kind, out.b, 0, 5, true, false, " (standard deviation of ln " + input + ")");
-  } else {
-    b.check_range_as(second, second_kind, out.b, 0, kInf, true, true, "");
-  }
-  return out;
-}
-
 void read_reliability(const Block& top, Drive& drive) {
   const Block r(top.get("reliability"), "reliability", "reliability", top.key_mark("reliability"),
                 {"samples", "seed", "sampling", "R", "times", "ks_level", "bootstrap_replicates", "life_table",
@@ -699,8 +617,8 @@ void read_reliability(const Block& top, Drive& drive) {
   if (random == nullptr) return;
   if (random->type != MarkedNode::Type::kSequence) {
     throw InputError(random->mark, "reliability.random",
-                     "expected a list of random inputs (- {input: contact_ratio, distribution: normal, mean: 1.536, "
-                     "sd: 0.02}), found " + random->type_name());
+                     "expected a list of random inputs (- {input: contact_ratio, distribution: normal, sd: 0.02}), "
+                     "found " + random->type_name());
   }
   for (std::size_t i = 0; i < random->items.size(); ++i) {
     const std::string path = "reliability.random[" + std::to_string(i) + "]";
@@ -1124,7 +1042,9 @@ Drive drive_from_tree(const ProblemTree& tree) {
 
 Drive load_problem_text(const std::string& yaml_text, const std::string& name_for_messages,
                         const std::vector<std::string>& overrides) {
-  return drive_from_tree(load_problem_tree(yaml_text, name_for_messages, overrides));
+  Drive drive = drive_from_tree(load_problem_tree(yaml_text, name_for_messages, overrides));
+  check_overrides_against_absolute_inputs(drive, overrides);
+  return drive;
 }
 
 ProblemTree load_problem_tree_file(const std::string& path, const std::vector<std::string>& overrides) {

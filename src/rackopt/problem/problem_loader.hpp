@@ -38,6 +38,9 @@ namespace rackopt {
 // stresses are computed, metrics::drive_load_factors). Load factors < 1 are
 // refused (ISO 6336 factors are >= 1).
 // A `wear` section requires wear.coefficient and a hardness for both members.
+// An override of a key that changes the design value of a random input the
+// file gives as an absolute distribution is an InputError naming both
+// (problem/random_input_keys.hpp).
 Drive load_problem(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Same, from text; `name_for_messages` is the file name used in marks and
@@ -56,7 +59,9 @@ struct ProblemTree {
 
 // load_problem split in two: the tree (every variant validated, like
 // load_problem) and the drive built from a tree. load_problem_text(t, n, o)
-// == drive_from_tree(load_problem_tree(t, n, o)). Same errors as load_problem.
+// == drive_from_tree(load_problem_tree(t, n, o)) followed by
+// check_overrides_against_absolute_inputs(drive, o), which callers of the
+// two halves run themselves. Same errors as load_problem otherwise.
 ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& name_for_messages,
                               const std::vector<std::string>& overrides = {});
 ProblemTree load_problem_tree_file(const std::string& path, const std::vector<std::string>& overrides = {});

@@ -84,8 +84,10 @@ class Distribution {
   double b_;
 };
 
-// The distribution of one declared random input of a drive
-// (RandomInput::a/b as documented in core/drive.hpp). Invalid parameters throw
+// The distribution of RandomInput::a/b read as the absolute parameters of
+// the input (core/drive.hpp), whatever `absolute` says: an input around the
+// design goes through life/design_scatter.hpp's input_distribution, which
+// calls this with the parameters made absolute. Invalid parameters throw
 // InputError with key "reliability.inputs.<key>".
 Distribution to_distribution(const RandomInput& input);
 

@@ -21,6 +21,7 @@
 #include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/problem/random_input_keys.hpp"
 #include "rackopt/solvers/problem.hpp"
 #include "rackopt/units/units.hpp"
 
@@ -655,6 +656,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   try {
     tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
     drive = drive_from_tree(tree);
+    check_overrides_against_absolute_inputs(drive, spec.problem_overrides);
   } catch (const InputError& e) {
     rethrow_problem_error(e, origins);
   }
@@ -672,6 +674,9 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
       VariableSites sites;
       spec.variables.push_back(read_variable(e, sites));
       variable_sites.push_back(std::move(sites));
+      // A variable moves its random inputs' design values: an absolute one
+      // would ignore it (problem/random_input_keys.hpp).
+      check_absolute_random_inputs(drive, e.key, e.key_mark, "variables." + e.key);
     }
   }
   // Every bound / value as the problem sees it (others at the problem's own
@@ -988,7 +993,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
     if (drive.reliability.inputs.empty()) {
       throw InputError(kind_mark, "study.kind",
                        "a reliability study needs random inputs in the problem's reliability section "
-                       "(reliability.random, e.g. - {input: contact_ratio, distribution: normal, mean: 1.44, sd: "
+                       "(reliability.random, e.g. - {input: contact_ratio, distribution: normal, shift: -0.096, sd: "
                        "0.038}); '" + spec.problem_path + "' has none");
     }
   }
