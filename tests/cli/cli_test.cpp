@@ -1,4 +1,6 @@
 // The rackopt program end to end: exit codes, files written, --json output.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -33,10 +35,21 @@ CliResult run(const std::string& args) {
 }
 
 std::string tmp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + name);
+  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   return dir.string();
 }
+
+// Each test process writes under its own folder (a normal and a sanitizer
+// build, or two checkouts, may run these at once) and removes it at the end.
+class RemoveTmpRoot : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + std::to_string(::getpid())), ec);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
 
 TEST(Cli, CheckPrintsGeometryAndSucceeds) {
   const CliResult r = run("check problems/rack_railway.yaml");

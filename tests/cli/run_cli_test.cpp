@@ -41,11 +41,22 @@ std::string slurp(const std::string& path) {
 }
 
 std::string tmp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("rackopt_run_cli_test_" + name);
+  const auto dir = fs::temp_directory_path() / ("rackopt_run_cli_test_" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
 }
+
+// Each test process writes under its own folder (a normal and a sanitizer
+// build, or two checkouts, may run these at once) and removes it at the end.
+class RemoveTmpRoot : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_run_cli_test_" + std::to_string(::getpid())), ec);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
 
 // Runs the CLI with `args` (shell words) from the source directory.
 CliResult run(const std::string& args, const std::string& scratch) {

@@ -1,6 +1,8 @@
 // `rackopt wear` end to end, and the seed 004 validation of issue 3: the
 // shipped ship_lift problem reproduces the paper's reliability table
 // (physics.md 12.2) within 0.05 and its 1000 lives pass the gamma fit at 5 %.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -35,10 +37,21 @@ CliResult run(const std::string& args) {
 }
 
 std::string tmp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_wear_cli_test_" + name);
+  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_wear_cli_test_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   return dir.string();
 }
+
+// Each test process writes under its own folder (a normal and a sanitizer
+// build, or two checkouts, may run these at once) and removes it at the end.
+class RemoveTmpRoot : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_wear_cli_test_" + std::to_string(::getpid())), ec);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
 
 // Seed 004's reliability table (physics.md 12.2). The 40-year row is not in
 // the +-0.05 requirement (it is inconsistent with any fitted distribution);
