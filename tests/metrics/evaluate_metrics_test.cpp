@@ -402,3 +402,24 @@ TEST(MetricRegistryCheck, AMetricWithoutComputationFailsAtStartUp) {
 
 }  // namespace
 }  // namespace rackopt::metrics
+
+namespace rackopt::metrics {
+namespace {
+
+// A design whose geometry is impossible (40 mm of clearance leaves the ship
+// lift a contact ratio below 1) fails its wear metric with the geometry as
+// the cause, not the wear model.
+TEST(EvaluateMetrics, AnImpossibleGeometryIsTheCauseNotTheWearMetric) {
+  Drive ship = problem("ship_lift");
+  ship.mounting.clearance = 0.040;
+  const MetricValues v = eval(ship, {"wear_life_at_R(0.9)", "min_stiffness", "supports_per_metre"});
+  ASSERT_FALSE(v.values[0].ok);
+  EXPECT_EQ(v.values[0].error_code, "contact_ratio_below_one");
+  EXPECT_EQ(v.values[0].cause, "geometry");
+  EXPECT_EQ(v.values[1].cause, "geometry");
+  EXPECT_TRUE(v.values[2].ok);
+  EXPECT_EQ(v.values[2].cause, "");
+}
+
+}  // namespace
+}  // namespace rackopt::metrics

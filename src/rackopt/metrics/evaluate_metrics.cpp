@@ -194,7 +194,9 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
   m.drive = &drive;
   m.options = &o;
   m.stress_inputs = resolve_stress_inputs(drive, o);
-  auto failure_of = [](const DesignError& e) { return ModelFailure{e.code(), e.what()}; };
+  auto failure_of = [](const DesignError& e, Model model) {
+    return ModelFailure{e.code(), e.what(), std::string(model_name(model))};
+  };
 
   // --- geometry ---------------------------------------------------------
   if (needed.contains(Model::kGeometry)) {
@@ -204,7 +206,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       m.geometry_slot.value = build_mesh_geometry(drive);
       for (const std::string& w : m.geometry_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
-      m.geometry_slot.failure = failure_of(e);
+      m.geometry_slot.failure = failure_of(e, Model::kGeometry);
     }
   }
 
@@ -217,7 +219,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       m.curve_slot.value = model.curve();
       for (const std::string& w : m.curve_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
-      m.curve_slot.failure = failure_of(e);
+      m.curve_slot.failure = failure_of(e, Model::kStiffnessCurve);
     }
   }
 
@@ -283,8 +285,8 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       }
       m.life_at_R_slot.value = std::move(rel);
     } catch (const DesignError& e) {
-      m.wear_slot.failure = failure_of(e);
-      m.life_at_R_slot.failure = failure_of(e);
+      m.wear_slot.failure = failure_of(e, Model::kWearReliability);
+      m.life_at_R_slot.failure = failure_of(e, Model::kWearReliability);
     }
   } else if (needed.contains(Model::kWearLife)) {
     out.models_run.insert(Model::kWearLife);
@@ -294,7 +296,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       for (const std::string& w : model.warnings()) add_warning(out, w);
       m.wear_slot.value = model.life();
     } catch (const DesignError& e) {
-      m.wear_slot.failure = failure_of(e);
+      m.wear_slot.failure = failure_of(e, Model::kWearLife);
     }
   }
   if (m.wear_slot.value) {
@@ -316,9 +318,35 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
                                format_quantity(m.stress_slot.value->rack_root_radius, QuantityKind::kLength, "mm", 4));
         }
       } catch (const DesignError& e) {
-        m.stress_slot.failure = failure_of(e);
+        m.stress_slot.failure = failure_of(e, Model::kStress);
       }
     }
+  }
+
+  // --- causes --------------------------------------------------------------
+  // Every model builds the geometry first: a model that failed because the
+  // geometry is impossible reports the geometry as the cause (a contact
+  // ratio below 1 is not a wear failure). Checked only on a failure, so the
+  // geometry is not built twice on the normal path.
+  {
+    std::optional<ModelFailure> geometry_failure = m.geometry_slot.failure;
+    bool geometry_known = m.geometry_slot.computed();
+    auto attribute = [&](auto& slot) {
+      if (!slot.failure || slot.failure->model == model_name(Model::kGeometry)) return;
+      if (!geometry_known) {
+        geometry_known = true;
+        try {
+          build_mesh_geometry(drive);
+        } catch (const DesignError& e) {
+          geometry_failure = failure_of(e, Model::kGeometry);
+        }
+      }
+      if (geometry_failure) slot.failure = geometry_failure;
+    };
+    attribute(m.curve_slot);
+    attribute(m.wear_slot);
+    attribute(m.life_at_R_slot);
+    attribute(m.stress_slot);
   }
 
   // --- values --------------------------------------------------------------
@@ -337,10 +365,16 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       } else {
         mv.error_code = "non_finite";
         mv.message = "metric " + mv.label + " evaluated to a non-finite number";
+        mv.cause = "metric";
       }
+    } catch (const ModelFailed& e) {
+      mv.error_code = e.code();
+      mv.message = e.what();
+      mv.cause = e.model();
     } catch (const DesignError& e) {
       mv.error_code = e.code();
       mv.message = e.what();
+      mv.cause = "metric";
     }
     out.values.push_back(std::move(mv));
   }

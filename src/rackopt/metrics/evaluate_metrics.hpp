@@ -79,6 +79,12 @@ struct MetricValue {
   std::string display;       // value in the definition's display unit, e.g. "61.2 yr", "812 MPa"
   std::string error_code;    // when failed: the DesignError code, or "non_finite"
   std::string message;       // when failed: why; when ok: a remark or ""
+  // When failed: what failed. A model name ("geometry", "stiffness_curve",
+  // "wear_life", "wear_reliability", "stress") when a model could not be
+  // computed, "geometry" whenever the drive's geometry itself is impossible
+  // (whichever model met it), "metric" when the metric's own computation
+  // failed (e.g. a non-finite value).
+  std::string cause;
 };
 
 struct MetricValues {

@@ -23,10 +23,24 @@
 
 namespace rackopt::metrics {
 
-// Why a model could not be computed for this design (a DesignError's code and message).
+// Why a model could not be computed for this design (a DesignError's code
+// and message) and which model's limit it is: "geometry" when the drive's
+// geometry itself is impossible, whichever model ran into it.
 struct ModelFailure {
   std::string code;
   std::string message;
+  std::string model;  // model_name() of the cause
+};
+
+// A model's failure as a metric computation meets it: a DesignError that
+// also says which model failed.
+class ModelFailed : public DesignError {
+ public:
+  explicit ModelFailed(const ModelFailure& f) : DesignError(f.code, f.message), model_(f.model) {}
+  const std::string& model() const { return model_; }
+
+ private:
+  std::string model_;
 };
 
 // A model's outcome: a value, a failure, or neither (not computed).
@@ -64,7 +78,7 @@ struct ModelResults {
  private:
   template <class T>
   static const T& get(const ModelSlot<T>& slot, const char* model) {
-    if (slot.failure) throw DesignError(slot.failure->code, slot.failure->message);
+    if (slot.failure) throw ModelFailed(*slot.failure);
     if (!slot.value) throw std::logic_error(std::string("a metric read the model '") + model +
                                             "' without declaring it in the metric registry");
     return *slot.value;

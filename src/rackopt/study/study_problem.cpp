@@ -210,8 +210,16 @@ DesignEvaluation StudyProblem::evaluate_design(std::span<const double> x_si, uns
       d.metric_ok[i] = mv.values[i].ok;
       d.metric_values[i] = mv.values[i].ok ? mv.values[i].value : 0.0;
     }
-    if (const metrics::MetricValue* f = mv.first_failure())
-      failure = f->label + " failed (" + f->error_code + "): " + f->message;
+    if (const metrics::MetricValue* f = mv.first_failure()) {
+      // Name the real cause: an impossible geometry fails every metric that
+      // needs it, and is not the first such metric's failure.
+      failure = f->cause == "geometry"
+                    ? "the design's geometry is impossible (" + f->error_code + "): " + f->message
+                    : f->label + " failed (" + f->error_code + (f->cause.empty() || f->cause == "metric"
+                                                                    ? std::string()
+                                                                    : ", in the " + f->cause + " model") +
+                          "): " + f->message;
+    }
     d.warnings = mv.warnings;
   } catch (const InputError& e) {
     // A range check of the loader that only this design breaks (e.g. a
