@@ -13,6 +13,7 @@
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/metrics/ks_aggregate.hpp"
+#include "rackopt/metrics/mesh_dynamics_metrics.hpp"  // mesh ripple, transmission error
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 namespace rackopt::metrics {
@@ -215,12 +216,14 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
   // --- stiffness curve ----------------------------------------------------
   std::optional<StiffnessCurve> curve;
   std::optional<Failure> curve_failure;
+  MeshDynamicsFigures dynamics;  // mesh ripple, transmission error: only the requested ones
   if (needed.contains(Model::kStiffnessCurve)) {
     out.models_run.insert(Model::kStiffnessCurve);
     ++out.model_runs;
     try {
       const MeshStiffnessModel model(drive);
       curve = model.curve();
+      dynamics = mesh_dynamics_figures(model, *curve, resolved);  // mesh ripple, transmission error
       for (const std::string& w : curve->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
       curve_failure = Failure{e.code(), e.what()};
@@ -344,6 +347,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
         else if (n == "min_stiffness") oc = value(c.k_min);
         else if (n == "max_stiffness") oc = value(c.k_max);
         else if (n == "mean_stiffness") oc = value(c.k_mean);
+        else if (is_mesh_dynamics_metric(n)) oc = value(mesh_dynamics_value(dynamics, n));  // mesh ripple, TE
         else {
           // KS on ln k over the samples plus the refined extremes (so the
           // bounds hold against k_min/k_max themselves, not only against the

@@ -9,6 +9,7 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/suggest.hpp"
+#include "rackopt/metrics/mesh_dynamics_metrics.hpp"  // mesh ripple, transmission error
 
 namespace rackopt::metrics {
 namespace {
@@ -59,6 +60,7 @@ std::vector<MetricDefinition> build_registry() {
                "(max_stiffness_ks - min_stiffness_ks)/k_mean: a smooth upper bound of "
                "stiffness_fluctuation",
                curve, 0, kStiffnessEffects, true, kRho, "from the two KS aggregates"});
+  add_mesh_dynamics_definitions(r);  // mesh ripple, transmission error (mesh_dynamics_metrics.cpp)
   r.push_back({"contact_ratio", "-", QuantityKind::kDimensionless, "",
                "contact ratio of the path actually used (interference limits when enabled)",
                ModelSet{Model::kGeometry}, 0, "interference_limit", true, {},

@@ -11,9 +11,12 @@
 #include <Eigen/Dense>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/curve_numerics.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/loaded_contact.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
+#include "rackopt/stiffness/profile_relief.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
 
@@ -70,6 +73,7 @@ struct MeshStiffnessModel::Impl {
   std::optional<FilletFoundationCompliance> fillet;
   std::optional<RackToothCompliance> rack_tooth;
   std::optional<RackSpanCompliance> span_model;
+  std::optional<ReliefOnPath> relief;  // only when the drive has a profile relief
 
   double a0 = 0, ca = 0, sa = 0;
   double pitch = 0, pb = 0, s_p = 0, s_start = 0, s_end = 0;
@@ -122,6 +126,7 @@ struct MeshStiffnessModel::Impl {
     if (fx.rack_tooth) rack_tooth.emplace(geo, drive.rack, b_rack, drive.numerics);
     if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(drive.rack, a0, fx);
     if (fx.spalling) map_spalls();
+    if (ReliefOnPath r(drive, geo); r.any()) relief.emplace(r);
   }
 
   void map_spalls() {
@@ -303,6 +308,7 @@ struct MeshStiffnessModel::Impl {
       p.fillet = lp.fillet;
       p.rack = lp.rack;
       p.spalled = lp.spalled;
+      if (relief) p.relief = relief->at(p.s);
       p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
       st.pairs.push_back(p);
     }
@@ -326,6 +332,51 @@ struct MeshStiffnessModel::Impl {
   }
 
   void solve(MeshState& st) const {
+    solve_without_relief(st);
+    // Without relief the loaded solution is the linear one: delta = F/K.
+    if (st.stiffness > 0) st.approach = drive.load.force / st.stiffness;
+    if (relief) {
+      for (const PairState& p : st.pairs) {
+        if (p.relief > 0) {
+          solve_relieved(st);
+          break;
+        }
+      }
+    }
+  }
+
+  // Pairs with relief: the loaded solution of (C + diag c) f = delta 1 - e,
+  // f >= 0, sum f = F on the same compliance matrix as solve_without_relief.
+  void solve_relieved(MeshState& st) const {
+    const std::size_t n = st.pairs.size();
+    std::vector<double> C(n * n, 0.0), gap(n);
+    const bool coupled = drive.effects.rack_span == RackSpanModel::kCoupled && span_model;
+    for (std::size_t j = 0; j < n; ++j) {
+      const PairState& pj = st.pairs[j];
+      gap[j] = pj.relief;
+      C[j * n + j] = pj.local() + pj.body;
+      if (!coupled) continue;
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const PairState& pk = st.pairs[k];
+        const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        C[j * n + k] = c;
+        C[k * n + j] = c;
+      }
+    }
+    const double F = drive.load.force;
+    LoadedContact lc;
+    try {
+      lc = solve_loaded_contact(C, gap, F);
+    } catch (const std::runtime_error&) {
+      throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                               std::to_string(st.travel));
+    }
+    st.stiffness = lc.tangent_stiffness;
+    st.approach = lc.approach;
+    for (std::size_t j = 0; j < n; ++j) st.pairs[j].load_share = F > 0 ? lc.force[j] / F : 0.0;
+  }
+
+  void solve_without_relief(MeshState& st) const {
     const std::size_t n = st.pairs.size();
     st.local_stiffness = 0;
     for (const PairState& p : st.pairs) st.local_stiffness += 1.0 / p.local();
@@ -453,50 +504,6 @@ double MeshStiffnessModel::stiffness(double travel, int side) const { return at(
 std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const {
   return impl_->breakpoints(lo, hi);
 }
-
-namespace {
-
-// Integral over [x1, x2] of the Lagrange polynomial through the given points
-// (2, 3 or 4 of them, x1 and x2 among them), by 3-point Gauss-Legendre: exact
-// for cubics.
-double interval_integral(const double* xs, const double* ys, int n, double x1, double x2) {
-  static const double gx[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-  static const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  const double mid = 0.5 * (x1 + x2), half = 0.5 * (x2 - x1);
-  double sum = 0;
-  for (int g = 0; g < 3; ++g) {
-    const double x = mid + half * gx[g];
-    double p = 0;
-    for (int a = 0; a < n; ++a) {
-      double l = 1;
-      for (int b = 0; b < n; ++b) {
-        if (b != a) l *= (x - xs[b]) / (xs[a] - xs[b]);
-      }
-      p += ys[a] * l;
-    }
-    sum += gw[g] * p;
-  }
-  return sum * half;
-}
-
-// Minimizes f on [lo, hi] by golden-section search (f unimodal there).
-template <class F>
-std::pair<double, double> golden_min(F&& f, double lo, double hi, double x_tol) {
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = lo, b = hi;
-  double c = b - g * (b - a), d = a + g * (b - a);
-  double fc = f(c), fd = f(d);
-  for (int it = 0; it < 200 && (b - a) > x_tol; ++it) {
-    if (fc < fd) {
-      b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
-    } else {
-      a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
-    }
-  }
-  return fc < fd ? std::make_pair(c, fc) : std::make_pair(d, fd);
-}
-
-}  // namespace
 
 StiffnessCurve MeshStiffnessModel::curve() const {
   const Impl& im = *impl_;

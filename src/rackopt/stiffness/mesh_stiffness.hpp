@@ -37,16 +37,25 @@ struct PairState {
   ToothCompliance rack;
   double body = 0;       // diagonal of the body flexibility matrix (own load on own contact)
   bool spalled = false;  // a spall changes this pair at this position
+  double relief = 0;     // profile relief at this contact: gap to close before it carries load [m]
   double local() const { return pinion.total() + fillet + hertz + rack.total(); }
-  // f_j / F. Contact is unilateral: 0 when the rack body carries this contact
-  // away from the pinion faster than the common approach (the pair opens).
+  // f_j / F under load.force. Contact is unilateral: 0 when the rack body
+  // carries this contact away from the pinion faster than the common
+  // approach (the pair opens), or when its relief is not closed.
   double load_share = 0;
 };
 
 // Mesh state at one travel position X.
+// With profile relief the state is the loaded one (load.force): K is the
+// tangent stiffness dF/d(delta) of the pairs that carry load, which equals
+// the unloaded K wherever every pair in mesh carries load
+// (docs/models/transmission_error.md).
 struct MeshState {
   double travel = 0;         // X [m]
   double stiffness = 0;      // K_mesh [N/m]
+  // Mesh deflection (approach) along the line of action that carries
+  // load.force: the static transmission error [m]. F/K without relief.
+  double approach = 0;
   double local_stiffness = 0;  // sum of 1/local compliance: the mesh with a rigid rack body [N/m]
   std::vector<PairState> pairs;  // ordered by s
 };
