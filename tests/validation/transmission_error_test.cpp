@@ -75,5 +75,209 @@ TEST(MeshRipple, FlexibleBodyRippleIsBelowTheSpanFluctuation) {
   std::printf("coupled: fluct %.6g ripple max %.6g mean %.6g\n", f.curve.k_fluctuation, f.ripple.max, f.ripple.mean);
 }
 
+// An independent look at one period of the coupled mesh: 20001 evaluations
+// of the model across the period plus both limits at every discontinuity
+// inside it; the ripple from those agrees with the refined period extremes.
+TEST(MeshRipple, OnePeriodAgreesWithDenseEvaluation) {
+  const Drive d = railway(RackSpanModel::kCoupled);
+  const MeshStiffnessModel model(d);
+  const StiffnessCurve c = model.curve();
+  const std::vector<PeriodStats> periods = period_stats(model, c, CurveQuantity::kStiffness);
+  const MeshRipple r = mesh_ripple(periods);
+  for (std::size_t k : {std::size_t{0}, std::size_t{7}, std::size_t{12}}) {
+    const PeriodStats& w = periods.at(k);
+    double k_min = 1e300, k_max = 0, sum = 0;
+    const int N = 20000;
+    for (int i = 0; i <= N; ++i) {
+      const double X = w.start + (w.end - w.start) * i / N;
+      const double K = model.stiffness(X, i == N ? -1 : +1);
+      k_min = std::min(k_min, K);
+      k_max = std::max(k_max, K);
+      sum += (i == 0 || i == N) ? 0.5 * K : K;
+    }
+    for (double xb : model.breakpoints(w.start, w.end)) {
+      for (int side : {-1, +1}) {
+        if ((xb <= w.start && side < 0) || (xb >= w.end && side > 0)) continue;
+        const double K = model.stiffness(xb, side);
+        k_min = std::min(k_min, K);
+        k_max = std::max(k_max, K);
+      }
+    }
+    const double mean = sum / N;  // trapezoid: jumps cost O(h), fine at 2e4 points
+    const double dense = (k_max - k_min) / mean;
+    SCOPED_TRACE(k);
+    EXPECT_NEAR(w.min, k_min, 1e-6 * k_min);  // dense sampling can only miss an extreme by O(h^2)
+    EXPECT_NEAR(w.max, k_max, 1e-6 * k_max);
+    EXPECT_LE(w.min, k_min);
+    EXPECT_GE(w.max, k_max);
+    EXPECT_NEAR(w.mean, mean, 1e-4 * mean);
+    EXPECT_NEAR(r.ripple.at(k), dense, 1e-4 * dense);
+  }
+}
+
+// --- profile relief --------------------------------------------------------
+
+// Pinion tip relief as the test computes it, independently of ReliefOnPath.
+double tip_relief_at(const ProfileRelief& rel, double s_end, double s) {
+  const double u = s - (s_end - rel.length);
+  if (u <= 0) return 0.0;
+  const double t = std::min(u / rel.length, 1.0);
+  return rel.amount * (rel.shape == ProfileRelief::Shape::kLinear ? t : t * t);
+}
+
+// Rigid body, two pairs, the one near the pinion tip relieved by e: two
+// springs c1 (unrelieved) and c2 in parallel with a gap e on c2:
+//   e >= F c1: delta = F c1, f2 = 0, K = 1/c1;
+//   else       delta = (F + e/c2)/(1/c1 + 1/c2), f2 = (delta - e)/c2, K = 1/c1 + 1/c2.
+TEST(ProfileRelief, TwoSpringHandValuesWithLinearTipRelief) {
+  for (ProfileRelief::Shape shape : {ProfileRelief::Shape::kLinear, ProfileRelief::Shape::kParabolic}) {
+    Drive d = railway(RackSpanModel::kRigid);
+    d.pinion.tip_relief = {60e-6, 0.8 * d.pinion.module, shape};
+    const MeshStiffnessModel model(d);
+    const StiffnessCurve c = model.curve();
+    const double F = d.load.force;
+    const double s_end = model.geometry().path.s_end;
+    int loaded = 0, open = 0;
+    for (const MeshState& st : c.samples) {
+      if (st.pairs.size() != 2) continue;
+      const bool first_at_tip = st.pairs[0].s > st.pairs[1].s;
+      const PairState& p1 = st.pairs[first_at_tip ? 1 : 0];  // p2: the pair nearer the pinion tip
+      const PairState& p2 = st.pairs[first_at_tip ? 0 : 1];
+      const double e = tip_relief_at(d.pinion.tip_relief, s_end, p2.s);
+      ASSERT_NEAR(p2.relief, e, 1e-15);
+      ASSERT_EQ(p1.relief, 0.0);
+      if (e == 0) continue;
+      const double c1 = p1.local(), c2 = p2.local();
+      double delta = 0, f2 = 0, K = 0;
+      if (e >= F * c1) {
+        delta = F * c1;
+        K = 1 / c1;
+        ++open;
+      } else {
+        delta = (F + e / c2) / (1 / c1 + 1 / c2);
+        f2 = (delta - e) / c2;
+        K = 1 / c1 + 1 / c2;
+        ++loaded;
+      }
+      ASSERT_NEAR(st.approach, delta, 1e-12 * delta) << "X = " << st.travel;
+      ASSERT_NEAR(p2.load_share, f2 / F, 1e-11);
+      ASSERT_NEAR(st.stiffness, K, 1e-12 * K);
+    }
+    EXPECT_GT(loaded, 10);
+    EXPECT_GT(open, 3);  // near the zone end the relief (up to 60 um) exceeds F c1 (about 45 um)
+  }
+}
+
+// A relief far larger than the double-contact deflection: inside the
+// relieved zone (past its first few micrometres) the pair never carries load
+// and the transmission error is the single pair's, F c1 (hand value).
+TEST(ProfileRelief, LargeReliefKeepsThePairOutAndGivesTheSinglePairValue) {
+  Drive d = railway(RackSpanModel::kRigid);
+  d.pinion.tip_relief = {1e-3, 0.5 * d.pinion.module, ProfileRelief::Shape::kLinear};
+  const MeshStiffnessModel model(d);
+  const StiffnessCurve c = model.curve();
+  const double F = d.load.force;
+  int checked = 0;
+  for (const MeshState& st : c.samples) {
+    if (st.pairs.size() != 2) continue;
+    const bool first_at_tip = st.pairs[0].s > st.pairs[1].s;
+    const PairState& p1 = st.pairs[first_at_tip ? 1 : 0];
+    const PairState& p2 = st.pairs[first_at_tip ? 0 : 1];
+    if (p2.relief <= F * p1.local()) continue;
+    ++checked;
+    EXPECT_EQ(p2.load_share, 0.0);
+    EXPECT_NEAR(st.approach, F * p1.local(), 1e-12 * st.approach);
+    EXPECT_NEAR(st.stiffness, 1 / p1.local(), 1e-12 * st.stiffness);
+  }
+  EXPECT_GT(checked, 20);
+  // The relieved stretch is single contact: the ripple grows, the mean falls.
+  const StiffnessCurve plain = MeshStiffnessModel(railway(RackSpanModel::kRigid)).curve();
+  EXPECT_GT(c.k_fluctuation, plain.k_fluctuation);
+  EXPECT_LT(c.k_mean, plain.k_mean);
+}
+
+// Relief only adds gaps: delta(X) grows with the amount at every position,
+// a parabolic relief (less material removed than linear everywhere inside
+// the zone) gives a delta no larger than the linear one, and a zero amount
+// is exactly the unrelieved mesh.
+TEST(ProfileRelief, OrderingAndMonotonicity) {
+  for (RackSpanModel body : {RackSpanModel::kRigid, RackSpanModel::kCoupled}) {
+    SCOPED_TRACE(static_cast<int>(body));
+    const Drive base = railway(body);
+    const StiffnessCurve plain = MeshStiffnessModel(base).curve();
+    auto with = [&](double amount, ProfileRelief::Shape shape) {
+      Drive d = base;
+      d.pinion.tip_relief = {amount, 1.0 * d.pinion.module, shape};
+      d.pinion.root_relief = {amount, 1.0 * d.pinion.module, shape};
+      return MeshStiffnessModel(d).curve();
+    };
+    const StiffnessCurve zero = with(0.0, ProfileRelief::Shape::kLinear);
+    ASSERT_EQ(zero.samples.size(), plain.samples.size());
+    for (std::size_t i = 0; i < plain.samples.size(); ++i) {
+      ASSERT_EQ(zero.samples[i].approach, plain.samples[i].approach);
+      ASSERT_EQ(zero.samples[i].stiffness, plain.samples[i].stiffness);
+    }
+    std::vector<StiffnessCurve> linear;
+    for (double a : {10e-6, 20e-6, 40e-6, 80e-6}) linear.push_back(with(a, ProfileRelief::Shape::kLinear));
+    const StiffnessCurve parabolic = with(40e-6, ProfileRelief::Shape::kParabolic);
+    int strictly_less = 0;
+    for (std::size_t i = 0; i < plain.samples.size(); ++i) {
+      double prev = plain.samples[i].approach;
+      for (const StiffnessCurve& l : linear) {
+        ASSERT_EQ(l.samples[i].travel, plain.samples[i].travel);
+        ASSERT_GE(l.samples[i].approach, prev * (1 - 1e-13)) << "X = " << l.samples[i].travel;
+        prev = l.samples[i].approach;
+      }
+      const double lin40 = linear[2].samples[i].approach, par40 = parabolic.samples[i].approach;
+      ASSERT_LE(par40, lin40 * (1 + 1e-13));
+      ASSERT_GE(par40, plain.samples[i].approach * (1 - 1e-13));
+      if (par40 < lin40 * (1 - 1e-6)) ++strictly_less;
+    }
+    EXPECT_GT(strictly_less, 100);
+  }
+}
+
+// Transmission error peak-to-peak against the amount of a long relief on the
+// pinion tip and root (1.72 m each: the length of the double-contact stretch,
+// (eps - 1) p_b): it falls from the unrelieved value to a minimum inside the
+// range and rises again once the relieved pairs stop sharing load.
+double te_for_amount(RackSpanModel body, double amount, bool period_mean) {
+  Drive d = railway(body);
+  d.pinion.tip_relief = {amount, 1.72 * d.pinion.module, ProfileRelief::Shape::kLinear};
+  d.pinion.root_relief = d.pinion.tip_relief;
+  const MeshStiffnessModel model(d);
+  const TransmissionError te = transmission_error(period_stats(model, model.curve(), CurveQuantity::kApproach));
+  return period_mean ? te.period_mean : te.peak_to_peak;
+}
+
+TEST(ProfileRelief, RackRailwayHasAnOptimalReliefInsideASensibleRange) {
+  struct Case {
+    RackSpanModel body;
+    bool period_mean;
+    double hi;
+  };
+  for (const Case& k : {Case{RackSpanModel::kRigid, false, 100e-6}, Case{RackSpanModel::kCoupled, true, 300e-6}}) {
+    auto f = [&](double a) { return te_for_amount(k.body, a, k.period_mean); };
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double a = 0, b = k.hi, x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = f(x1), f2 = f(x2);
+    while (b - a > 0.2e-6) {
+      if (f1 < f2) {
+        b = x2; x2 = x1; f2 = f1; x1 = b - g * (b - a); f1 = f(x1);
+      } else {
+        a = x1; x1 = x2; f1 = f2; x2 = a + g * (b - a); f2 = f(x2);
+      }
+    }
+    const double best = 0.5 * (a + b), te_best = f(best), te_none = f(0.0), te_hi = f(k.hi);
+    std::printf("rack railway, body %s, %s: no relief %.3f um, best %.3f um at %.1f um, at %.0f um %.3f um\n",
+                k.body == RackSpanModel::kRigid ? "rigid" : "coupled",
+                k.period_mean ? "mean period STE_pp" : "STE_pp", te_none * 1e6, te_best * 1e6, best * 1e6,
+                k.hi * 1e6, te_hi * 1e6);
+    EXPECT_GT(best, 10e-6);
+    EXPECT_LT(best, 0.8 * k.hi);
+    EXPECT_LT(te_best, te_none);
+    EXPECT_LT(te_best, te_hi);
+  }
+}
+
 }  // namespace
 }  // namespace rackopt

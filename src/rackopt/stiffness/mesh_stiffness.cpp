@@ -291,7 +291,7 @@ struct MeshStiffnessModel::Impl {
     const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
-    for (int j = j_hi; j >= j_lo; --j) {  // ascending s
+    for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
       PairState p;
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);

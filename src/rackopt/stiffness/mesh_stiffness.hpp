@@ -57,7 +57,7 @@ struct MeshState {
   // load.force: the static transmission error [m]. F/K without relief.
   double approach = 0;
   double local_stiffness = 0;  // sum of 1/local compliance: the mesh with a rigid rack body [N/m]
-  std::vector<PairState> pairs;  // ordered by s
+  std::vector<PairState> pairs;  // ordered by s, descending (nearest the pinion tip first)
 };
 
 struct StiffnessCurve {
