@@ -373,7 +373,12 @@ struct MeshStiffnessModel::Impl {
     }
     st.stiffness = lc.tangent_stiffness;
     st.approach = lc.approach;
-    for (std::size_t j = 0; j < n; ++j) st.pairs[j].load_share = F > 0 ? lc.force[j] / F : 0.0;
+    // The rigid-body reference counts the same pairs as K: those that carry load.
+    st.local_stiffness = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      st.pairs[j].load_share = F > 0 ? lc.force[j] / F : 0.0;
+      if (lc.loaded[j]) st.local_stiffness += 1.0 / st.pairs[j].local();
+    }
   }
 
   void solve_without_relief(MeshState& st) const {

@@ -56,7 +56,9 @@ struct MeshState {
   // Mesh deflection (approach) along the line of action that carries
   // load.force: the static transmission error [m]. F/K without relief.
   double approach = 0;
-  double local_stiffness = 0;  // sum of 1/local compliance: the mesh with a rigid rack body [N/m]
+  // Sum of 1/local compliance: the mesh with a rigid rack body [N/m] (with
+  // profile relief: over the pairs that carry load).
+  double local_stiffness = 0;
   std::vector<PairState> pairs;  // ordered by s, descending (nearest the pinion tip first)
 };
 
