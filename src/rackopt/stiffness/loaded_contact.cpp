@@ -1,6 +1,7 @@
 #include "rackopt/stiffness/loaded_contact.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,10 +15,12 @@ namespace {
 using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
 using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 8, 1>;
 
+// The solution on one active set and how far it is from satisfying all
+// conditions (0 = it is the solution).
 struct Candidate {
-  Vec f;             // all n pairs (0 off the set)
+  Vec f;                 // all n pairs (0 off the set)
   double delta = 0;
-  double K = 0;      // 1^T C_A^-1 1
+  double K = 0;          // 1^T C_A^-1 1
   double violation = 0;  // largest negative force or penetration, scaled
   unsigned mask = 0;     // the active set
 };
@@ -46,16 +49,7 @@ LoadedContact solve_loaded_contact(std::span<const double> C_in, std::span<const
   const double f_tol = 1e-12 * F_scale;
   const double d_tol = 1e-12 * d_scale;
 
-  // n <= 8 (in practice 2..4): try every active set, largest first. The
-  // problem is strictly convex, so exactly one set satisfies all conditions
-  // (up to ties at a threshold, where both give the same answer).
-  const unsigned full = (1u << n) - 1u;
-  Candidate best;
-  best.violation = std::numeric_limits<double>::infinity();
-  bool found = false;
-  for (int size = static_cast<int>(n); size >= 1 && !found; --size) {
-  for (unsigned mask = full; mask >= 1 && !found; --mask) {
-    if (__builtin_popcount(mask) != size) continue;
+  auto try_set = [&](unsigned mask) {
     std::size_t idx[8];
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -68,39 +62,44 @@ LoadedContact solve_loaded_contact(std::span<const double> C_in, std::span<const
       for (std::size_t b = 0; b < m; ++b) CA(a, b) = C(idx[a], idx[b]);
     }
     const Eigen::LLT<Mat> llt(CA);
-    if (llt.info() != Eigen::Success) {
-      throw std::runtime_error("mesh flexibility matrix is not positive definite");
-    }
+    if (llt.info() != Eigen::Success) throw std::runtime_error("mesh flexibility matrix is not positive definite");
     const Vec u = llt.solve(Vec::Ones(m));  // C_A^-1 1
     const Vec w = llt.solve(gA);            // C_A^-1 g_A
-    const double K = u.sum();
-    if (!(K > 0) || !std::isfinite(K)) throw std::runtime_error("mesh flexibility matrix is not positive definite");
-    // f_A = delta u - w with sum f_A = F.
-    const double delta = (F + w.sum()) / K;
     Candidate c;
-    c.f = Vec::Zero(n);
-    c.delta = delta;
-    c.K = K;
+    c.K = u.sum();
+    if (!(c.K > 0) || !std::isfinite(c.K)) throw std::runtime_error("mesh flexibility matrix is not positive definite");
+    // f_A = delta u - w with sum f_A = F.
+    c.delta = (F + w.sum()) / c.K;
     c.mask = mask;
-    // Violations, scaled: a negative force against F, a penetration of an
-    // open pair against the deflection scale.
-    double viol = 0;
+    c.f = Vec::Zero(n);
     for (std::size_t a = 0; a < m; ++a) {
-      const double fa = delta * u[a] - w[a];
+      const double fa = c.delta * u[a] - w[a];
       c.f[idx[a]] = fa;
-      if (fa < -f_tol) viol = std::max(viol, -fa / F_scale);
+      if (fa < -f_tol) c.violation = std::max(c.violation, -fa / F_scale);
     }
     // Open pairs must not penetrate: (C f)_i + g_i - delta >= 0.
     const Vec Cf = C * c.f;
     for (std::size_t i = 0; i < n; ++i) {
       if (mask & (1u << i)) continue;
-      const double gap_left = Cf[i] + g[i] - delta;
-      if (gap_left < -d_tol) viol = std::max(viol, -gap_left / d_scale);
+      const double gap_left = Cf[i] + g[i] - c.delta;
+      if (gap_left < -d_tol) c.violation = std::max(c.violation, -gap_left / d_scale);
     }
-    c.violation = viol;
-    if (viol < best.violation) best = c;
-    found = viol == 0;
-  }
+    return c;
+  };
+
+  // n <= 8 (in practice 2..4): try the active sets, largest first. The
+  // problem is strictly convex, so exactly one set satisfies all conditions
+  // (up to ties at a threshold, where both give the same answer). Should
+  // rounding leave none exact, the least violating one is taken.
+  const unsigned full = (1u << n) - 1u;
+  Candidate best;
+  best.violation = std::numeric_limits<double>::infinity();
+  for (int size = static_cast<int>(n); size >= 1 && best.violation > 0; --size) {
+    for (unsigned mask = full; mask >= 1 && best.violation > 0; --mask) {
+      if (std::popcount(mask) != size) continue;
+      Candidate c = try_set(mask);
+      if (c.violation < best.violation) best = std::move(c);
+    }
   }
   LoadedContact out;
   out.approach = best.delta;

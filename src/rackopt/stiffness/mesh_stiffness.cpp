@@ -332,6 +332,7 @@ struct MeshStiffnessModel::Impl {
   }
 
   void solve(MeshState& st) const {
+    // Also fills each pair's body compliance, which solve_relieved reads.
     solve_without_relief(st);
     // Without relief the loaded solution is the linear one: delta = F/K.
     if (st.stiffness > 0) st.approach = drive.load.force / st.stiffness;
