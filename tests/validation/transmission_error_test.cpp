@@ -217,31 +217,65 @@ TEST(ProfileRelief, OrderingAndMonotonicity) {
       Drive d = base;
       d.pinion.tip_relief = {amount, 1.0 * d.pinion.module, shape};
       d.pinion.root_relief = {amount, 1.0 * d.pinion.module, shape};
-      return MeshStiffnessModel(d).curve();
+      return MeshStiffnessModel(d);
     };
-    const StiffnessCurve zero = with(0.0, ProfileRelief::Shape::kLinear);
+    const StiffnessCurve zero = with(0.0, ProfileRelief::Shape::kLinear).curve();
     ASSERT_EQ(zero.samples.size(), plain.samples.size());
     for (std::size_t i = 0; i < plain.samples.size(); ++i) {
       ASSERT_EQ(zero.samples[i].approach, plain.samples[i].approach);
       ASSERT_EQ(zero.samples[i].stiffness, plain.samples[i].stiffness);
     }
-    std::vector<StiffnessCurve> linear;
+    std::vector<MeshStiffnessModel> linear;
     for (double a : {10e-6, 20e-6, 40e-6, 80e-6}) linear.push_back(with(a, ProfileRelief::Shape::kLinear));
-    const StiffnessCurve parabolic = with(40e-6, ProfileRelief::Shape::kParabolic);
+    const MeshStiffnessModel parabolic = with(40e-6, ProfileRelief::Shape::kParabolic);
     int strictly_less = 0;
+    // Every sample position of the unrelieved curve, each one-sided limit.
     for (std::size_t i = 0; i < plain.samples.size(); ++i) {
+      const double X = plain.samples[i].travel;
+      const bool left = i + 1 < plain.samples.size() && plain.samples[i + 1].travel == X;
+      const int side = left ? -1 : +1;
       double prev = plain.samples[i].approach;
-      for (const StiffnessCurve& l : linear) {
-        ASSERT_EQ(l.samples[i].travel, plain.samples[i].travel);
-        ASSERT_GE(l.samples[i].approach, prev * (1 - 1e-13)) << "X = " << l.samples[i].travel;
-        prev = l.samples[i].approach;
+      for (const MeshStiffnessModel& l : linear) {
+        const double delta = l.at(X, side).approach;
+        ASSERT_GE(delta, prev * (1 - 1e-13)) << "X = " << X;
+        prev = delta;
       }
-      const double lin40 = linear[2].samples[i].approach, par40 = parabolic.samples[i].approach;
+      const double lin40 = linear[2].at(X, side).approach, par40 = parabolic.at(X, side).approach;
       ASSERT_LE(par40, lin40 * (1 + 1e-13));
       ASSERT_GE(par40, plain.samples[i].approach * (1 - 1e-13));
       if (par40 < lin40 * (1 - 1e-6)) ++strictly_less;
     }
     EXPECT_GT(strictly_less, 100);
+  }
+}
+
+// Where a relieved pair starts or stops carrying load the tangent stiffness
+// jumps; the curve locates those positions by bisection and treats them like
+// geometric breakpoints, so extremes, mean and ripple do not depend on where
+// the uniform samples fall (as without relief, docs/models/mesh.md).
+TEST(ProfileRelief, LoadSwitchesAreBreakpointsSoFiguresDoNotDependOnSampling) {
+  for (RackSpanModel body : {RackSpanModel::kRigid, RackSpanModel::kCoupled}) {
+    SCOPED_TRACE(static_cast<int>(body));
+    std::vector<Figures> f;
+    std::size_t plain_breaks = 0;
+    for (int n : {37, 100, 163}) {
+      Drive d = railway(body);
+      d.numerics.positions_per_period = n;
+      plain_breaks = MeshStiffnessModel(d).breakpoints(0, d.rack.span).size();
+      d.pinion.tip_relief = {60e-6, 1.72 * d.pinion.module, ProfileRelief::Shape::kLinear};
+      d.pinion.root_relief = d.pinion.tip_relief;
+      f.push_back(figures(d));
+    }
+    EXPECT_GT(f[1].curve.breakpoints.size(), plain_breaks);  // the load switches were added
+    for (const Figures& g : f) {
+      EXPECT_NEAR(g.curve.k_min, f[1].curve.k_min, 1e-7 * f[1].curve.k_min);
+      EXPECT_NEAR(g.curve.k_max, f[1].curve.k_max, 1e-7 * f[1].curve.k_max);
+      EXPECT_NEAR(g.curve.k_mean, f[1].curve.k_mean, 2e-6 * f[1].curve.k_mean);
+      EXPECT_NEAR(g.ripple.max, f[1].ripple.max, 1e-5 * f[1].ripple.max);
+      EXPECT_NEAR(g.ripple.mean, f[1].ripple.mean, 1e-5 * f[1].ripple.mean);
+      EXPECT_NEAR(g.te.peak_to_peak, f[1].te.peak_to_peak, 1e-7 * f[1].te.peak_to_peak);
+      EXPECT_NEAR(g.te.period_mean, f[1].te.period_mean, 1e-6 * f[1].te.period_mean);
+    }
   }
 }
 

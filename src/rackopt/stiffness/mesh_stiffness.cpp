@@ -554,6 +554,86 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   out.samples.reserve(probes.size());
   for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts));
 
+  if (im.relief) {
+    // With relief the tangent stiffness jumps where a relieved pair starts or
+    // stops carrying load (delta only has a kink there). Those positions
+    // depend on the solution: bisect each sample interval whose loaded set
+    // changes down to the break tolerance and add both limits, so extremes
+    // and mean stay exact as at the geometric breakpoints.
+    auto loaded_set = [](const MeshState& st) {
+      std::vector<std::pair<int, bool>> out_set;
+      for (const PairState& p : st.pairs) out_set.emplace_back(p.rack_tooth, p.load_share > 0);
+      return out_set;
+    };
+    auto same_pairs = [](const MeshState& a, const MeshState& b) {
+      if (a.pairs.size() != b.pairs.size()) return false;
+      for (std::size_t k = 0; k < a.pairs.size(); ++k) {
+        if (a.pairs[k].rack_tooth != b.pairs[k].rack_tooth) return false;
+      }
+      return true;
+    };
+    std::vector<Probe> extra_probes;
+    std::vector<MeshState> extra_samples;
+    for (std::size_t i = 0; i + 1 < out.samples.size(); ++i) {
+      if (probes[i + 1].X - probes[i].X <= tol || !same_pairs(out.samples[i], out.samples[i + 1])) continue;
+      const auto right_set = loaded_set(out.samples[i + 1]);
+      double lo = probes[i].X;
+      auto lo_set = loaded_set(out.samples[i]);
+      // Each pass finds the first switch in (lo, right end); more than one
+      // switch between two samples is handled by the next pass.
+      for (int pass = 0; pass < 8 && lo_set != right_set; ++pass) {
+        double hi = probes[i + 1].X;
+        std::optional<MeshState> lo_state, hi_state;
+        while (hi - lo > 0.5 * tol) {
+          const double mid = 0.5 * (lo + hi);
+          MeshState m = im.state(mid, 0, parts);
+          if (loaded_set(m) == lo_set) {
+            lo = mid;
+            lo_state = std::move(m);
+          } else {
+            hi = mid;
+            hi_state = std::move(m);
+          }
+        }
+        // A limit that stayed on a sample is that sample: mark it instead of
+        // adding a second sample at the same travel.
+        if (lo_state) {
+          extra_probes.push_back({lo, -1});
+          extra_samples.push_back(*lo_state);
+        } else if (lo == probes[i].X) {
+          probes[i].side = -1;
+        }
+        if (hi_state) {
+          extra_probes.push_back({hi, +1});
+          extra_samples.push_back(*hi_state);
+          lo_set = loaded_set(*hi_state);
+        } else {
+          lo_set = right_set;  // the switch sits just before sample i + 1
+        }
+        out.breakpoints.push_back(0.5 * (lo + hi));
+        lo = hi;
+      }
+    }
+    if (!extra_probes.empty()) {
+      std::vector<std::size_t> order(probes.size() + extra_probes.size());
+      std::vector<Probe> all_probes = probes;
+      all_probes.insert(all_probes.end(), extra_probes.begin(), extra_probes.end());
+      std::vector<MeshState> all_samples = std::move(out.samples);
+      for (MeshState& st : extra_samples) all_samples.push_back(std::move(st));
+      for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) {
+        return all_probes[a].X < all_probes[c].X;
+      });
+      probes.clear();
+      out.samples.clear();
+      for (std::size_t k : order) {
+        probes.push_back(all_probes[k]);
+        out.samples.push_back(std::move(all_samples[k]));
+      }
+      std::sort(out.breakpoints.begin(), out.breakpoints.end());
+    }
+  }
+
   // Smooth pieces: a left-limit sample closes a piece.
   const std::size_t n = out.samples.size();
   std::vector<int> piece(n, 0);
