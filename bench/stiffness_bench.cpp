@@ -48,7 +48,7 @@ void BM_SinglePosition(benchmark::State& state) {
 BENCHMARK(BM_SinglePosition)->Unit(benchmark::kMicrosecond);
 
 // The same curve with a long tip and root relief on the pinion (42 um over
-// 1.72 m each): every position with a relieved pair goes through the loaded
+// 1.72 modules each): every position with a relieved pair goes through the loaded
 // contact solve.
 void BM_FullSpanCurveWithRelief(benchmark::State& state) {
   rackopt::Drive d = railway();

@@ -280,7 +280,7 @@ TEST(ProfileRelief, LoadSwitchesAreBreakpointsSoFiguresDoNotDependOnSampling) {
 }
 
 // Transmission error peak-to-peak against the amount of a long relief on the
-// pinion tip and root (1.72 m each: the length of the double-contact stretch,
+// pinion tip and root (1.72 modules each: the length of the double-contact stretch,
 // (eps - 1) p_b): it falls from the unrelieved value to a minimum inside the
 // range and rises again once the relieved pairs stop sharing load.
 double te_for_amount(RackSpanModel body, double amount, bool period_mean) {
