@@ -5,7 +5,10 @@
 #include <string>
 
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/mesh_ripple.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/period_stats.hpp"
+#include "rackopt/stiffness/transmission_error.hpp"
 
 namespace {
 
@@ -43,6 +46,30 @@ void BM_SinglePosition(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_SinglePosition)->Unit(benchmark::kMicrosecond);
+
+// The same curve with a long tip and root relief on the pinion (42 um over
+// 1.72 modules each): every position with a relieved pair goes through the loaded
+// contact solve.
+void BM_FullSpanCurveWithRelief(benchmark::State& state) {
+  rackopt::Drive d = railway();
+  d.pinion.tip_relief = {42e-6, 1.72 * d.pinion.module, rackopt::ProfileRelief::Shape::kLinear};
+  d.pinion.root_relief = d.pinion.tip_relief;
+  for (auto _ : state) {
+    rackopt::MeshStiffnessModel model(d);
+    benchmark::DoNotOptimize(model.curve().k_min);
+  }
+}
+BENCHMARK(BM_FullSpanCurveWithRelief)->Unit(benchmark::kMillisecond);
+
+// Per-period statistics on a computed curve: the extra cost of the mesh
+// ripple (arg 0) or the transmission error (arg 1) metrics.
+void BM_PeriodStats(benchmark::State& state) {
+  const rackopt::MeshStiffnessModel model(railway());
+  const rackopt::StiffnessCurve curve = model.curve();
+  const auto q = state.range(0) == 0 ? rackopt::CurveQuantity::kStiffness : rackopt::CurveQuantity::kApproach;
+  for (auto _ : state) benchmark::DoNotOptimize(rackopt::period_stats(model, curve, q).size());
+}
+BENCHMARK(BM_PeriodStats)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

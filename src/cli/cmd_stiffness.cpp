@@ -14,6 +14,7 @@
 #include "rackopt/units/units.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/period_stats.hpp"
 
 namespace rackopt::cli {
 
@@ -65,6 +66,10 @@ int cmd_stiffness(const Args& a) {
   const auto t1 = std::chrono::steady_clock::now();
   rackopt::StiffnessCurve curve = model.curve();
   t.curve_ms = ms_since(t1);
+  const rackopt::MeshRipple ripple =
+      rackopt::mesh_ripple(rackopt::period_stats(model, curve, rackopt::CurveQuantity::kStiffness));
+  const rackopt::TransmissionError te =
+      rackopt::transmission_error(rackopt::period_stats(model, curve, rackopt::CurveQuantity::kApproach));
 
   namespace fs = std::filesystem;
   fs::path dir = a.out_dir.empty() ? fs::path("out") / fs::path(a.file).stem() : fs::path(a.out_dir);
@@ -76,7 +81,8 @@ int cmd_stiffness(const Args& a) {
   const std::string png = render_plot(dir, "stiffness.gp", "stiffness.png", curve.warnings);
   t.total_ms = ms_since(t0);
 
-  std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve);
+  std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve) +
+                     rackopt::mesh_dynamics_summary(ripple, te);
   text += "  wrote " + csv.string() + "\n";
   text += png.empty() ? "  no plot (see warnings)\n" : "  plot  " + png + "\n";
   for (std::size_t i = model.warnings().size(); i < curve.warnings.size(); ++i) {
@@ -84,7 +90,7 @@ int cmd_stiffness(const Args& a) {
   }
   if (a.json) {
     std::cerr << text;
-    std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, t, csv.string(), png) << "\n";
+    std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, ripple, te, t, csv.string(), png) << "\n";
   } else {
     std::cout << text;
   }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -86,6 +87,42 @@ TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
   }
+}
+
+// Mesh ripple and transmission error in the JSON, the deflection column in
+// the CSV (F/K without relief), and a relief given with --set.
+TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
+  const std::string dir = tmp_dir("te");
+  const CliResult r = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  const double F = 50e3;  // load.force of rack_railway.yaml
+  EXPECT_NEAR(j["mesh_ripple_max"].get<double>(), j["k_fluctuation"].get<double>(), 1e-6);  // rigid: periodic
+  const double pp = j["transmission_error"]["peak_to_peak"].get<double>();
+  EXPECT_NEAR(pp, F * (1 / j["k_min"].get<double>() - 1 / j["k_max"].get<double>()), 1e-7 * pp);
+  EXPECT_EQ(j["mesh_ripple"].size(), 24u);
+  std::ifstream csv(dir + "/stiffness.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(header.rfind("travel_m,stiffness_N_per_m,rigid_body_stiffness_N_per_m,pairs_in_mesh,"
+                         "body_equivalent_compliance_m_per_N,transmission_error_m,pair0_in_mesh", 0), 0u);
+  std::istringstream cells(row);
+  std::string cell;
+  std::vector<double> v;
+  while (std::getline(cells, cell, ',') && v.size() < 6) v.push_back(std::stod(cell));
+  ASSERT_EQ(v.size(), 6u);
+  EXPECT_NEAR(v[5], F / v[1], 1e-8 * v[5]);
+
+  const CliResult relieved = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
+                                 "--set 'pinion.tip_relief.amount=42 um' --set pinion.tip_relief.length=1.72 "
+                                 "--set 'pinion.root_relief.amount=42 um' --set pinion.root_relief.length=1.72 --out " +
+                                 tmp_dir("te_relief"));
+  ASSERT_EQ(relieved.code, 0) << relieved.out;
+  const auto k = nlohmann::json::parse(relieved.out);
+  EXPECT_LT(k["transmission_error"]["peak_to_peak"].get<double>(), 0.25 * pp);  // 22.1 -> 4.1 um
+  EXPECT_EQ(run("stiffness problems/rack_railway.yaml --set 'pinion.tip_relief.amount=42 um' --out " +
+                tmp_dir("te_bad")).code, 2);  // no length
 }
 
 TEST(Cli, SetOverridesAKey) {

@@ -217,6 +217,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     try {
       const MeshStiffnessModel model(drive);
       m.curve_slot.value = model.curve();
+      m.dynamics_figures = mesh_dynamics_figures(model, *m.curve_slot.value, resolved);
       for (const std::string& w : m.curve_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
       m.curve_slot.failure = failure_of(e, Model::kStiffnessCurve);

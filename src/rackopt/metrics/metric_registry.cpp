@@ -18,6 +18,7 @@ namespace {
 std::vector<MetricDefinition> build_registry() {
   std::vector<MetricDefinition> r;
   append_stiffness_metrics(r);
+  append_mesh_dynamics_metrics(r);
   append_geometry_metrics(r);
   append_wear_metrics(r);
   append_stress_metrics(r);

@@ -17,6 +17,7 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
+#include "rackopt/metrics/mesh_dynamics_metrics.hpp"
 #include "rackopt/metrics/tooth_stress.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/wear/wear_life.hpp"
@@ -65,12 +66,17 @@ struct ModelResults {
 
   ModelSlot<MeshGeometry> geometry_slot;
   ModelSlot<StiffnessCurve> curve_slot;
+  MeshDynamicsFigures dynamics_figures;  // with the curve: only the parts a requested metric needs
   ModelSlot<WearLifeResult> wear_slot;   // nominal life (from the wear model or the reliability run)
   ModelSlot<LifeAtR> life_at_R_slot;
   ModelSlot<ToothStress> stress_slot;
 
   const MeshGeometry& geometry() const { return get(geometry_slot, "geometry"); }
   const StiffnessCurve& curve() const { return get(curve_slot, "stiffness_curve"); }
+  const MeshDynamicsFigures& dynamics() const {
+    curve();  // a failed curve fails these too
+    return dynamics_figures;
+  }
   const WearLifeResult& wear_life() const { return get(wear_slot, "wear_life"); }
   const LifeAtR& life_at_R() const { return get(life_at_R_slot, "wear_reliability"); }
   const ToothStress& stress() const { return get(stress_slot, "stress"); }

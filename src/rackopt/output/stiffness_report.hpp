@@ -6,7 +6,9 @@
 #include <string>
 
 #include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/stiffness/mesh_ripple.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/transmission_error.hpp"
 
 namespace rackopt {
 
@@ -16,6 +18,9 @@ std::string geometry_summary(const Drive& drive, const MeshGeometry& geometry);
 
 // Human-readable stiffness result (MN/m), plus where files went.
 std::string stiffness_summary(const StiffnessCurve& curve);
+
+// Human-readable mesh ripple and static transmission error (um) lines.
+std::string mesh_dynamics_summary(const MeshRipple& ripple, const TransmissionError& te);
 
 // One row per sample; per-pair columns repeated for slots 0..max_pairs-1.
 // SI units throughout (m, N/m, m/N).
@@ -28,9 +33,10 @@ struct Timings {
 };
 
 // Exactly one JSON object (SI units): contact_ratio, k_min, k_max, k_mean,
-// k_fluctuation, zones, warnings, timings, ...
+// k_fluctuation, mesh_ripple, transmission_error, zones, warnings, timings, ...
 std::string stiffness_json(const Drive& drive, const MeshGeometry& geometry, const StiffnessCurve& curve,
-                           const Timings& timings, const std::string& csv_path, const std::string& plot_path);
+                           const MeshRipple& ripple, const TransmissionError& te, const Timings& timings,
+                           const std::string& csv_path, const std::string& plot_path);
 
 // gnuplot script that reads `csv_name` (in the same directory) and writes `png_name`.
 std::string stiffness_gnuplot(const StiffnessCurve& curve, const std::string& title, const std::string& csv_name,

@@ -44,6 +44,16 @@ constexpr KeySpec kKeySpecs[] = {
     {"pinion.dedendum", QuantityKind::kDimensionless, 0, 3, true, false},
     {"pinion.tip_radius", QuantityKind::kDimensionless, 0, 1, false, false},
     {"pinion.bore_radius", QuantityKind::kLength, 0, 10.0, true, false},
+    // Profile relief (docs/yaml.md): amount along the flank normal; length a
+    // multiple of the module (a length with its unit is accepted too, up to 5 m_n).
+    {"pinion.tip_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
+    {"pinion.tip_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"pinion.root_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
+    {"pinion.root_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"rack.tip_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
+    {"rack.tip_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"rack.root_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
+    {"rack.root_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
     {"rack.addendum", QuantityKind::kDimensionless, 0, 3, true, false},
     {"rack.dedendum", QuantityKind::kDimensionless, 0, 3, true, false},
     {"rack.face_width", QuantityKind::kLength, 0, 10.0, true, false},
@@ -269,6 +279,35 @@ Material find_material(const std::map<std::string, Material>& materials, const B
   throw InputError(name ? name->second : block.mark(), block.child_path(key),
                    "unknown material '" + wanted + "'; defined: " + join_names(names) +
                        " (add it under materials: {" + wanted + ": {E: ..., nu: ...}})");
+}
+
+// A tip or root relief of one member; `pattern` is the KeySpec path of the
+// relief map ("pinion.tip_relief"). Absent: no relief.
+ProfileRelief read_relief(const Block& member, const std::string& key, const std::string& pattern, double module) {
+  ProfileRelief out;
+  if (!member.has(key)) return out;
+  const Block b(member.get(key), member.child_path(key), pattern, member.key_mark(key), {"amount", "length", "shape"});
+  out.amount = b.number("amount", std::nullopt);
+  b.check_range("amount", out.amount, 0, 0.1 * module, false, false,
+                " (a tenth of the module; reliefs are tens of micrometres: write e.g. 20 um)");
+  if (const auto text = b.scalar("length", "a multiple of the module (e.g. 0.3) or a length (e.g. 8 mm)")) {
+    // A bare number is a multiple of the module, a number with a unit a length.
+    double coef = 0;
+    try {
+      coef = parse_quantity(text->first, QuantityKind::kDimensionless, text->second, b.child_path("length"));
+    } catch (const InputError&) {
+      coef = parse_quantity(text->first, QuantityKind::kLength, text->second, b.child_path("length")) / module;
+    }
+    b.check_range("length", coef, 0, 5, true, false, " (multiples of the module, 5 m = " +
+                                                         format_length_mm(5 * module) + ")");
+    out.length = coef * module;
+  } else if (out.amount > 0) {
+    b.missing("length", "the relief length along the line of action: a multiple of the module (e.g. 0.3) or a "
+                        "length (e.g. 8 mm)");
+  }
+  out.shape = b.choice("shape", {"linear", "parabolic"}, "linear") == "parabolic" ? ProfileRelief::Shape::kParabolic
+                                                                                  : ProfileRelief::Shape::kLinear;
+  return out;
 }
 
 // ------------------------------------------------------------ wear, duty, reliability
@@ -685,7 +724,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   // --- pinion
   const Block p(top.get("pinion"), "pinion", "pinion", top.mark(),
                 {"teeth", "module", "pressure_angle", "face_width", "profile_shift", "addendum", "dedendum",
-                 "tip_radius", "bore_radius", "material"});
+                 "tip_radius", "bore_radius", "material", "tip_relief", "root_relief"});
   PinionSpec& pin = drive.pinion;
   pin.teeth = p.count("teeth", std::nullopt);
   pin.module = p.number("module", std::nullopt);
@@ -709,11 +748,13 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
     pin.bore_radius = root_radius > 0 ? 0.5 * root_radius : 0.0;
   }
   pin.material = find_material(materials, p, "material");
+  pin.tip_relief = read_relief(p, "tip_relief", "pinion.tip_relief", pin.module);
+  pin.root_relief = read_relief(p, "root_relief", "pinion.root_relief", pin.module);
 
   // --- rack
   const Block r(top.get("rack"), "rack", "rack", top.mark(),
                 {"addendum", "dedendum", "face_width", "body_height", "body_width", "section", "span", "supports",
-                 "tooth_offset", "root_radius", "material"});
+                 "tooth_offset", "root_radius", "material", "tip_relief", "root_relief"});
   RackSpec& rack = drive.rack;
   rack.addendum_coef = r.number("addendum", 1.0);
   rack.dedendum_coef = r.number("dedendum", 1.25);
@@ -758,6 +799,8 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   r.check_range("tooth_offset", rack.tooth_offset, 0, rack.span, false, false, " (within the span rack.span)");
   rack.root_radius = r.number("root_radius", 0.0, " (0 = the pinion cutter tip radius)");
   rack.material = find_material(materials, r, "material");
+  rack.tip_relief = read_relief(r, "tip_relief", "rack.tip_relief", pin.module);
+  rack.root_relief = read_relief(r, "root_relief", "rack.root_relief", pin.module);
 
   // --- mounting
   const Block mount(top.get("mounting"), "mounting", "mounting", top.mark(), {"clearance"});

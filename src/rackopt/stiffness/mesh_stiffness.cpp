@@ -11,9 +11,12 @@
 #include <Eigen/Dense>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/curve_numerics.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/loaded_contact.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
+#include "rackopt/stiffness/profile_relief.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
 
@@ -70,6 +73,7 @@ struct MeshStiffnessModel::Impl {
   std::optional<FilletFoundationCompliance> fillet;
   std::optional<RackToothCompliance> rack_tooth;
   std::optional<RackSpanCompliance> span_model;
+  std::optional<ReliefOnPath> relief;  // only when the drive has a profile relief
 
   double a0 = 0, ca = 0, sa = 0;
   double pitch = 0, pb = 0, s_p = 0, s_start = 0, s_end = 0;
@@ -128,6 +132,7 @@ struct MeshStiffnessModel::Impl {
     if (fx.rack_tooth) rack_tooth.emplace(geo, drive.rack, b_rack, drive.numerics);
     if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(drive.rack, a0, fx);
     if (fx.spalling) map_spalls();
+    if (ReliefOnPath r(drive, geo); r.any()) relief.emplace(r);
   }
 
   void map_spalls() {
@@ -292,7 +297,7 @@ struct MeshStiffnessModel::Impl {
     const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
-    for (int j = j_hi; j >= j_lo; --j) {  // ascending s
+    for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
       PairState p;
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);
@@ -309,6 +314,7 @@ struct MeshStiffnessModel::Impl {
       p.fillet = lp.fillet;
       p.rack = lp.rack;
       p.spalled = lp.spalled;
+      if (relief) p.relief = relief->at(p.s);
       p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
       st.pairs.push_back(p);
     }
@@ -332,6 +338,57 @@ struct MeshStiffnessModel::Impl {
   }
 
   void solve(MeshState& st) const {
+    // Also fills each pair's body compliance, which solve_relieved reads.
+    solve_without_relief(st);
+    // Without relief the loaded solution is the linear one: delta = F/K.
+    if (st.stiffness > 0) st.approach = drive.load.force / st.stiffness;
+    if (relief) {
+      for (const PairState& p : st.pairs) {
+        if (p.relief > 0) {
+          solve_relieved(st);
+          break;
+        }
+      }
+    }
+  }
+
+  // Pairs with relief: the loaded solution of (C + diag c) f = delta 1 - e,
+  // f >= 0, sum f = F on the same compliance matrix as solve_without_relief.
+  void solve_relieved(MeshState& st) const {
+    const std::size_t n = st.pairs.size();
+    std::vector<double> C(n * n, 0.0), gap(n);
+    const bool coupled = drive.effects.rack_span == RackSpanModel::kCoupled && span_model;
+    for (std::size_t j = 0; j < n; ++j) {
+      const PairState& pj = st.pairs[j];
+      gap[j] = pj.relief;
+      C[j * n + j] = pj.local() + pj.body;
+      if (!coupled) continue;
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const PairState& pk = st.pairs[k];
+        const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        C[j * n + k] = c;
+        C[k * n + j] = c;
+      }
+    }
+    const double F = drive.load.force;
+    LoadedContact lc;
+    try {
+      lc = solve_loaded_contact(C, gap, F);
+    } catch (const std::runtime_error&) {
+      throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                               std::to_string(st.travel));
+    }
+    st.stiffness = lc.tangent_stiffness;
+    st.approach = lc.approach;
+    // The rigid-body reference counts the same pairs as K: those that carry load.
+    st.local_stiffness = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      st.pairs[j].load_share = F > 0 ? lc.force[j] / F : 0.0;
+      if (lc.loaded[j]) st.local_stiffness += 1.0 / st.pairs[j].local();
+    }
+  }
+
+  void solve_without_relief(MeshState& st) const {
     const std::size_t n = st.pairs.size();
     st.local_stiffness = 0;
     for (const PairState& p : st.pairs) st.local_stiffness += 1.0 / p.local();
@@ -460,50 +517,6 @@ std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const 
   return impl_->breakpoints(lo, hi);
 }
 
-namespace {
-
-// Integral over [x1, x2] of the Lagrange polynomial through the given points
-// (2, 3 or 4 of them, x1 and x2 among them), by 3-point Gauss-Legendre: exact
-// for cubics.
-double interval_integral(const double* xs, const double* ys, int n, double x1, double x2) {
-  static const double gx[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
-  static const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
-  const double mid = 0.5 * (x1 + x2), half = 0.5 * (x2 - x1);
-  double sum = 0;
-  for (int g = 0; g < 3; ++g) {
-    const double x = mid + half * gx[g];
-    double p = 0;
-    for (int a = 0; a < n; ++a) {
-      double l = 1;
-      for (int b = 0; b < n; ++b) {
-        if (b != a) l *= (x - xs[b]) / (xs[a] - xs[b]);
-      }
-      p += ys[a] * l;
-    }
-    sum += gw[g] * p;
-  }
-  return sum * half;
-}
-
-// Minimizes f on [lo, hi] by golden-section search (f unimodal there).
-template <class F>
-std::pair<double, double> golden_min(F&& f, double lo, double hi, double x_tol) {
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = lo, b = hi;
-  double c = b - g * (b - a), d = a + g * (b - a);
-  double fc = f(c), fd = f(d);
-  for (int it = 0; it < 200 && (b - a) > x_tol; ++it) {
-    if (fc < fd) {
-      b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
-    } else {
-      a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
-    }
-  }
-  return fc < fd ? std::make_pair(c, fc) : std::make_pair(d, fd);
-}
-
-}  // namespace
-
 StiffnessCurve MeshStiffnessModel::curve() const {
   const Impl& im = *impl_;
   StiffnessCurve out;
@@ -546,6 +559,86 @@ StiffnessCurve MeshStiffnessModel::curve() const {
 
   out.samples.reserve(probes.size());
   for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts));
+
+  if (im.relief) {
+    // With relief the tangent stiffness jumps where a relieved pair starts or
+    // stops carrying load (delta only has a kink there). Those positions
+    // depend on the solution: bisect each sample interval whose loaded set
+    // changes down to the break tolerance and add both limits, so extremes
+    // and mean stay exact as at the geometric breakpoints.
+    auto loaded_set = [](const MeshState& st) {
+      std::vector<std::pair<int, bool>> out_set;
+      for (const PairState& p : st.pairs) out_set.emplace_back(p.rack_tooth, p.load_share > 0);
+      return out_set;
+    };
+    auto same_pairs = [](const MeshState& a, const MeshState& b) {
+      if (a.pairs.size() != b.pairs.size()) return false;
+      for (std::size_t k = 0; k < a.pairs.size(); ++k) {
+        if (a.pairs[k].rack_tooth != b.pairs[k].rack_tooth) return false;
+      }
+      return true;
+    };
+    std::vector<Probe> extra_probes;
+    std::vector<MeshState> extra_samples;
+    for (std::size_t i = 0; i + 1 < out.samples.size(); ++i) {
+      if (probes[i + 1].X - probes[i].X <= tol || !same_pairs(out.samples[i], out.samples[i + 1])) continue;
+      const auto right_set = loaded_set(out.samples[i + 1]);
+      double lo = probes[i].X;
+      auto lo_set = loaded_set(out.samples[i]);
+      // Each pass finds the first switch in (lo, right end); more than one
+      // switch between two samples is handled by the next pass.
+      for (int pass = 0; pass < 8 && lo_set != right_set; ++pass) {
+        double hi = probes[i + 1].X;
+        std::optional<MeshState> lo_state, hi_state;
+        while (hi - lo > 0.5 * tol) {
+          const double mid = 0.5 * (lo + hi);
+          MeshState m = im.state(mid, 0, parts);
+          if (loaded_set(m) == lo_set) {
+            lo = mid;
+            lo_state = std::move(m);
+          } else {
+            hi = mid;
+            hi_state = std::move(m);
+          }
+        }
+        // A limit that stayed on a sample is that sample: mark it instead of
+        // adding a second sample at the same travel.
+        if (lo_state) {
+          extra_probes.push_back({lo, -1});
+          extra_samples.push_back(*lo_state);
+        } else if (lo == probes[i].X) {
+          probes[i].side = -1;
+        }
+        if (hi_state) {
+          extra_probes.push_back({hi, +1});
+          extra_samples.push_back(*hi_state);
+          lo_set = loaded_set(*hi_state);
+        } else {
+          lo_set = right_set;  // the switch sits just before sample i + 1
+        }
+        out.breakpoints.push_back(0.5 * (lo + hi));
+        lo = hi;
+      }
+    }
+    if (!extra_probes.empty()) {
+      std::vector<std::size_t> order(probes.size() + extra_probes.size());
+      std::vector<Probe> all_probes = probes;
+      all_probes.insert(all_probes.end(), extra_probes.begin(), extra_probes.end());
+      std::vector<MeshState> all_samples = std::move(out.samples);
+      for (MeshState& st : extra_samples) all_samples.push_back(std::move(st));
+      for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) {
+        return all_probes[a].X < all_probes[c].X;
+      });
+      probes.clear();
+      out.samples.clear();
+      for (std::size_t k : order) {
+        probes.push_back(all_probes[k]);
+        out.samples.push_back(std::move(all_samples[k]));
+      }
+      std::sort(out.breakpoints.begin(), out.breakpoints.end());
+    }
+  }
 
   // Smooth pieces: a left-limit sample closes a piece.
   const std::size_t n = out.samples.size();

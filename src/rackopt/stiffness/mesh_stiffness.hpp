@@ -37,24 +37,37 @@ struct PairState {
   ToothCompliance rack;
   double body = 0;       // diagonal of the body flexibility matrix (own load on own contact)
   bool spalled = false;  // a spall changes this pair at this position
+  double relief = 0;     // profile relief at this contact: gap to close before it carries load [m]
   double local() const { return pinion.total() + fillet + hertz + rack.total(); }
-  // f_j / F. Contact is unilateral: 0 when the rack body carries this contact
-  // away from the pinion faster than the common approach (the pair opens).
+  // f_j / F under load.force. Contact is unilateral: 0 when the rack body
+  // carries this contact away from the pinion faster than the common
+  // approach (the pair opens), or when its relief is not closed.
   double load_share = 0;
 };
 
 // Mesh state at one travel position X.
+// With profile relief the state is the loaded one (load.force): K is the
+// tangent stiffness dF/d(delta) of the pairs that carry load, which equals
+// the unloaded K wherever every pair in mesh carries load
+// (docs/models/transmission_error.md).
 struct MeshState {
   double travel = 0;         // X [m]
   double stiffness = 0;      // K_mesh [N/m]
-  double local_stiffness = 0;  // sum of 1/local compliance: the mesh with a rigid rack body [N/m]
-  std::vector<PairState> pairs;  // ordered by s
+  // Mesh deflection (approach) along the line of action that carries
+  // load.force: the static transmission error [m]. F/K without relief.
+  double approach = 0;
+  // Sum of 1/local compliance: the mesh with a rigid rack body [N/m] (with
+  // profile relief: over the pairs that carry load).
+  double local_stiffness = 0;
+  std::vector<PairState> pairs;  // ordered by s, descending (nearest the pinion tip first)
 };
 
 struct StiffnessCurve {
   // Samples sorted by travel. At a discontinuity (a pair enters or leaves, a
   // contact crosses a support) two samples share the travel value: the left
-  // and the right limit, in that order.
+  // and the right limit, in that order. With profile relief a relieved pair
+  // starting or stopping to carry load is a discontinuity too: its two
+  // limits lie within 1e-9 p of each other (found by bisection).
   std::vector<MeshState> samples;
   std::vector<double> breakpoints;  // travel positions of the discontinuities in [0, span]
   double k_min = 0, k_max = 0, k_mean = 0;
@@ -84,7 +97,8 @@ class MeshStiffnessModel {
   double stiffness(double travel, int side = 0) const;
 
   // The whole travel over one span, sampled at numerics.positions_per_period
-  // per mesh period plus every discontinuity; min, max (refined inside smooth
+  // per mesh period plus every discontinuity (including, with relief, the
+  // load switches of relieved pairs); min, max (refined inside smooth
   // pieces) and mean (piecewise cubic quadrature) do not depend on where the
   // uniform samples fall.
   StiffnessCurve curve() const;

@@ -1,0 +1,34 @@
+// Numerics shared by the quantities read off a stiffness curve: the integral
+// of a smooth piece through its samples and the refinement of an extreme
+// between samples (docs/models/mesh.md "Sampling, extremes and mean").
+#pragma once
+
+#include <cmath>
+#include <utility>
+
+namespace rackopt {
+
+// Integral over [x1, x2] of the Lagrange polynomial through the given points
+// (2, 3 or 4 of them, x1 and x2 among them), by 3-point Gauss-Legendre: exact
+// for cubics.
+double interval_integral(const double* xs, const double* ys, int n, double x1, double x2);
+
+// Minimizes f on [lo, hi] by golden-section search (f unimodal there), to
+// x_tol in x. Returns (x, f(x)).
+template <class F>
+std::pair<double, double> golden_min(F&& f, double lo, double hi, double x_tol) {
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = lo, b = hi;
+  double c = b - g * (b - a), d = a + g * (b - a);
+  double fc = f(c), fd = f(d);
+  for (int it = 0; it < 200 && (b - a) > x_tol; ++it) {
+    if (fc < fd) {
+      b = d; d = c; fd = fc; c = b - g * (b - a); fc = f(c);
+    } else {
+      a = c; c = d; fc = fd; d = a + g * (b - a); fd = f(d);
+    }
+  }
+  return fc < fd ? std::make_pair(c, fc) : std::make_pair(d, fd);
+}
+
+}  // namespace rackopt
