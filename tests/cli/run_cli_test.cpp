@@ -295,6 +295,75 @@ TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
   expect_store_complete(study, out);
 }
 
+// The sweep of write_sweep_study from 15 deg with the pressure angle varying
+// slowest: the 22-tooth pinion is undercut at the first four angles (15 to
+// 16.58 deg: z_min = 27.4 down to 22.7 for the railway problem's cutter) and
+// not from 17.1 deg on, so every undercut warning of the study comes from its
+// first 80 designs; the best design is the first one (15 deg, 1.2 m).
+std::string write_undercut_first_study(const std::string& dir) {
+  const std::string path = dir + "/undercut_first.yaml";
+  std::ofstream(path) << "study: {name: undercut first, kind: sweep, seed: 3}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "problem_set:\n  numerics.positions_per_period: 800\n"
+                      << "variables:\n"
+                      << "  pinion.pressure_angle: {lower: 15 deg, upper: 25 deg}\n"
+                      << "  rack.span: {lower: 1.2 m, upper: 3 m}\n"
+                      << "objectives:\n  - {metric: stiffness_fluctuation, scale: 1}\n"
+                      << "constraints:\n  - {metric: contact_ratio, min: 1.6}\n"
+                      << "sweep: {method: grid, levels: 20}\n"
+                      << "output: {plots: off, report: on, stiffness_curve: off}\n";
+  return path;
+}
+
+// report.md from "## Warnings" (either heading) up to the next section.
+std::string warnings_section(const std::string& md) {
+  const std::size_t begin = md.find("## Warnings");
+  if (begin == std::string::npos) return "";
+  return md.substr(begin, md.find("## Files", begin) - begin);
+}
+
+TEST(RunCli, ResumedRunReportsTheWarningsOfAnUninterruptedOne) {
+  const std::string dir = tmp_dir("warnings");
+  const std::string study = write_undercut_first_study(dir);
+  const CliResult ref = run("run '" + study + "' --json --threads 2 --out " + dir + "/ref", dir);
+  ASSERT_EQ(ref.code, 0) << ref.err;
+  const auto jref = nlohmann::json::parse(ref.out);
+  std::size_t undercut = 0;
+  for (const auto& w : jref["warnings"]) undercut += w.get<std::string>().find("pinion undercut") == 0 ? 1 : 0;
+  ASSERT_EQ(undercut, 4u) << jref["warnings"];
+  ASSERT_FALSE(jref["best"]["warnings"].empty()) << jref["best"];
+
+  // Stopped (Ctrl-C flushes every evaluation) after the undercut designs.
+  const std::string out = dir + "/run";
+  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+                          dir + "/e1.txt");
+  ASSERT_GT(pid, 0);
+  const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 88);
+  if (mid_run) kill(pid, SIGINT);
+  const int code = wait_exit(pid);
+  ASSERT_TRUE(mid_run) << "the sweep ended before it could be interrupted (exit " << code << ")";
+  ASSERT_EQ(code, 130);
+  const auto stopped = nlohmann::json::parse(slurp(dir + "/o1.txt"));
+  ASSERT_GE(stopped["evaluations"].get<long>(), 80);
+  ASSERT_LT(stopped["evaluations"].get<long>(), static_cast<long>(kSweepSize));
+
+  const CliResult resumed = run("run '" + study + "' --json --resume --out " + out, dir);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const auto j = nlohmann::json::parse(resumed.out);
+  EXPECT_EQ(j["reused_evaluations"], stopped["evaluations"]);
+  // The undercut designs (the best one among them) all came from the store,
+  // yet the run lists their warnings as the uninterrupted run does, in the
+  // same order, and the best design carries its own.
+  EXPECT_EQ(j["warnings"], jref["warnings"]);
+  ASSERT_TRUE(j["best"].is_object());
+  EXPECT_EQ(j["best"]["warnings"], jref["best"]["warnings"]);
+  const auto on_disk = nlohmann::json::parse(slurp(out + "/summary.json"));
+  EXPECT_EQ(on_disk["warnings"], jref["warnings"]);
+  const std::string section = warnings_section(slurp(out + "/report.md"));
+  EXPECT_NE(section.find("pinion undercut"), std::string::npos) << section;
+  EXPECT_EQ(section, warnings_section(slurp(dir + "/ref/report.md")));
+}
+
 TEST(RunCli, UsedFolderWithoutResumeIsRefused) {
   const std::string dir = tmp_dir("reuse");
   const std::string path = dir + "/tiny.yaml";

@@ -58,7 +58,8 @@ bool same_record(const RecordedEvaluation& a, const RecordedEvaluation& b) {
   }
   return a.phase == b.phase && same_bits(a.x, b.x) && same_bits(a.objectives, b.objectives) &&
          same_bits(a.inequality, b.inequality) && same_bits(a.equality, b.equality) && a.ok == b.ok &&
-         a.message == b.message && a.gradient_probe == b.gradient_probe && a.seconds == b.seconds;
+         a.message == b.message && a.gradient_probe == b.gradient_probe && a.seconds == b.seconds &&
+         a.warnings == b.warnings;
 }
 
 std::string thrown_message(auto&& f) {
@@ -82,6 +83,10 @@ RecordedEvaluation tricky_evaluation() {
   e.message = "pointed tooth: s_a = -1e-4 m, \"quoted\", comma, newline\nand ü";
   e.gradient_probe = true;
   e.seconds = 0.125;
+  // Every character the warnings cell escapes or ends on, an empty warning,
+  // text that looks like an escape, and a trailing backslash.
+  e.warnings = {"pinion undercut: z = 12 < z_min = 17.1", "", "two\nlines", "a \\n is not a line break",
+                "back\\slash\\", "\n", "ü, \"quoted\""};
   return e;
 }
 
@@ -101,6 +106,134 @@ TEST_F(StoreTest, EveryFieldRoundTripsBitExact) {
   EXPECT_TRUE(same_record(rows[0], in));
   EXPECT_EQ(store.variable_names(), vars_);
   EXPECT_EQ(store.metric_names(), (std::vector<std::string>{"mass_kg", "stiffness_N_per_m", "life_s"}));
+}
+
+TEST_F(StoreTest, WarningsRoundTripThroughFindAndAllAndMayBeEmpty) {
+  RecordedEvaluation with = tricky_evaluation(), without = tricky_evaluation(), one_empty = tricky_evaluation();
+  with.x = {1.0, 2.0};
+  without.x = {3.0, 4.0};
+  without.warnings.clear();
+  one_empty.x = {5.0, 6.0};
+  one_empty.warnings = {""};  // one empty warning is not "no warning"
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, false);
+    store.append(with);
+    store.append(without);
+    store.append(one_empty);
+  }
+  auto store = EvaluationStore::open(db_, "fp", vars_, true);
+  EXPECT_EQ(store.find(with.x)->warnings, with.warnings);
+  EXPECT_TRUE(store.find(without.x)->warnings.empty());
+  EXPECT_EQ(store.find(one_empty.x)->warnings, std::vector<std::string>{""});
+  const auto rows = store.all();
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].warnings.size(), 7u);
+  EXPECT_EQ(rows[0].warnings, with.warnings);
+}
+
+// A file written before warnings were recorded: the version-1 tables exactly
+// as that version created them, one row, its meta.
+void write_schema_1_file(const std::string& path, const std::vector<double>& x) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  const char* ddl = R"sql(
+CREATE TABLE meta(key TEXT PRIMARY KEY NOT NULL, value TEXT NOT NULL) WITHOUT ROWID;
+CREATE TABLE variables(position INTEGER PRIMARY KEY, name TEXT NOT NULL);
+CREATE TABLE metric_names(metric_id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE);
+CREATE TABLE evaluations(
+  id INTEGER PRIMARY KEY, phase TEXT NOT NULL, x_hash INTEGER NOT NULL, x BLOB NOT NULL,
+  objectives BLOB NOT NULL, inequality BLOB NOT NULL, equality BLOB NOT NULL,
+  metric_ids BLOB NOT NULL, metric_values BLOB NOT NULL, ok INTEGER NOT NULL, message TEXT NOT NULL,
+  gradient_probe INTEGER NOT NULL, seconds REAL NOT NULL);
+CREATE INDEX evaluations_by_x ON evaluations(x_hash);
+INSERT INTO meta VALUES('rackopt.schema', 'rackopt-evaluations 1'), ('rackopt.study_fingerprint', 'fp');
+INSERT INTO variables VALUES(0, 'module_m'), (1, 'face_width_m');
+)sql";
+  ASSERT_EQ(sqlite3_exec(db, ddl, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  // x as the store encodes it (little-endian doubles) with its FNV-1a key.
+  std::string bytes;
+  for (double v : x)
+    for (int b = 0; b < 8; ++b) bytes.push_back(static_cast<char>((std::bit_cast<std::uint64_t>(v) >> (8 * b)) & 0xffu));
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  sqlite3_stmt* s = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db,
+                               "INSERT INTO evaluations VALUES(1, 'start', ?1, ?2, x'', x'', x'', x'', x'', 1, "
+                               "'', 0, 0.5)",
+                               -1, &s, nullptr),
+            SQLITE_OK);
+  sqlite3_bind_int64(s, 1, std::bit_cast<std::int64_t>(h));
+  sqlite3_bind_blob(s, 2, bytes.data(), static_cast<int>(bytes.size()), SQLITE_TRANSIENT);
+  EXPECT_EQ(sqlite3_step(s), SQLITE_DONE);
+  sqlite3_finalize(s);
+  sqlite3_close(db);
+}
+
+// What a closed store file says about itself, read with SQLite directly.
+std::string sql_text(const std::string& path, const std::string& query) {
+  sqlite3* db = nullptr;
+  std::string out = "<no row>";
+  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
+    sqlite3_stmt* s = nullptr;
+    if (sqlite3_prepare_v2(db, query.c_str(), -1, &s, nullptr) == SQLITE_OK && sqlite3_step(s) == SQLITE_ROW) {
+      const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+      out = t ? t : "<null>";
+    }
+    sqlite3_finalize(s);
+  }
+  sqlite3_close(db);
+  return out;
+}
+
+TEST_F(StoreTest, SchemaOneFileIsUpgradedAndItsRowsHaveNoWarnings) {
+  fs::create_directories(fs::path(db_).parent_path());
+  const std::vector<double> old_x = {2e-3, 0.05};
+  write_schema_1_file(db_, old_x);
+  const std::string has_column = "SELECT count(*) FROM pragma_table_info('evaluations') WHERE name = 'warnings'";
+
+  // A refused open (no --resume) leaves the old file exactly as it was.
+  EXPECT_THROW(EvaluationStore::open(db_, "fp", vars_, false), OutputFolderConflict);
+  EXPECT_EQ(sql_text(db_, has_column), "0");
+  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 1");
+
+  RecordedEvaluation fresh = tricky_evaluation();
+  fresh.x = {3e-3, 0.06};
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, true);
+    ASSERT_EQ(store.size(), 1u);
+    const auto old = store.find(old_x);
+    ASSERT_TRUE(old.has_value());
+    EXPECT_EQ(old->id, 1);
+    EXPECT_EQ(old->phase, "start");
+    EXPECT_EQ(old->seconds, 0.5);
+    EXPECT_TRUE(old->warnings.empty());
+    EXPECT_EQ(store.append(fresh), 2);
+  }
+  EXPECT_EQ(sql_text(db_, has_column), "1");
+  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 2");
+  EXPECT_EQ(sql_text(db_, "PRAGMA integrity_check"), "ok");
+  auto store = EvaluationStore::open(db_, "fp", vars_, true);
+  const auto rows = store.all();
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_TRUE(rows[0].warnings.empty());
+  EXPECT_TRUE(same_record(rows[1], fresh));
+}
+
+TEST_F(StoreTest, UnknownSchemaVersionIsRefused) {
+  fs::create_directories(fs::path(db_).parent_path());
+  write_schema_1_file(db_, {1.0, 2.0});
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(db_.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE meta SET value = 'rackopt-evaluations 3' WHERE key = 'rackopt.schema'", nullptr,
+                         nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  const std::string msg = thrown_message([&] { EvaluationStore::open(db_, "fp", vars_, true); });
+  EXPECT_NE(msg.find("another rackopt version (rackopt-evaluations 3"), std::string::npos) << msg;
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM pragma_table_info('evaluations') WHERE name = 'warnings'"), "0");
 }
 
 TEST_F(StoreTest, FindIsExactOnBitsAndSeesUncommittedRows) {

@@ -489,6 +489,45 @@ TEST(StudyReport, OutputSwitchesTurnPlotsAndReportOff) {
   for (const auto& w : rep.written) EXPECT_TRUE(fs::exists(w)) << w;
 }
 
+TEST(StudyReport, BestDesignsOwnWarningsComeFirstUnderTheirOwnHeading) {
+  StudySpec spec = base_spec(StudyKind::kOptimize);
+  spec.output.plots = false;
+  StudyResult r;
+  r.status = "converged";
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.best->warnings = {"undercut of the best", "shared remark"};
+  r.best_history = {0.5};
+  // Run order: another design's warning came first.
+  r.warnings = {"warning of another design", "shared remark", "undercut of the best"};
+  const std::string dir = tmp_dir("best_warnings");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["best"]["warnings"], nlohmann::json({"undercut of the best", "shared remark"}));
+  EXPECT_EQ(j["warnings"], nlohmann::json({"undercut of the best", "shared remark", "warning of another design"}));
+
+  const std::string md = slurp(dir + "/report.md");
+  const std::size_t own = md.find("## Warnings of the best design\n");
+  const std::size_t rest = md.find("## Other warnings of the run\n");
+  ASSERT_NE(own, std::string::npos) << md;
+  ASSERT_NE(rest, std::string::npos) << md;
+  const std::size_t a = md.find("- undercut of the best\n"), b = md.find("- shared remark\n"),
+                    c = md.find("- warning of another design\n");
+  EXPECT_TRUE(own < a && a < b && b < rest && rest < c) << md;
+  EXPECT_EQ(md.find("- shared remark\n", b + 1), std::string::npos) << "listed twice\n" << md;
+
+  // A best design without warnings: one plain list, no empty section.
+  r.best->warnings.clear();
+  const std::string dir2 = tmp_dir("run_warnings_only");
+  const StudyReport rep2 = write_study_report(spec, r, dir2);
+  const std::string md2 = slurp(dir2 + "/report.md");
+  EXPECT_EQ(md2.find("Warnings of the best design"), std::string::npos) << md2;
+  EXPECT_EQ(md2.find("Other warnings"), std::string::npos) << md2;
+  EXPECT_NE(md2.find("## Warnings\n\n- warning of another design\n- shared remark\n- undercut of the best\n"),
+            std::string::npos)
+      << md2;
+  EXPECT_EQ(nlohmann::json::parse(rep2.summary_json)["best"]["warnings"], nlohmann::json::array());
+}
+
 TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   StudySpec spec;
   spec.name = "ship lift reliability";

@@ -458,7 +458,70 @@ TEST(StudyResume, SweepResumesWhereItStopped) {
   EXPECT_EQ(rows_of(resumed, s).size(), full.evaluations);
 }
 
-// ---------------------------------------------------------------- pareto
+// The railway pinion has 22 teeth: below a pressure angle of about 17.6 deg
+// (z_min = 2 / sin^2 a > 22) it is undercut, and the undercut warning names
+// the design's own form radius, so designs at different angles raise
+// different warnings. The sizing study's box (10..20 deg) has both kinds.
+TEST(StudyResume, ReusedDesignsBringTheirWarningsInTheOrderOfAnUninterruptedRun) {
+  const StudySpec s = sizing_spec(StudyKind::kOptimize);
+  const StudyResult full = run_study(s, options_in(fresh_dir("warn_full")));
+  ASSERT_TRUE(full.best);
+  ASSERT_GE(full.warnings.size(), 2u);
+
+  const std::string dir = fresh_dir("warn_cut");
+  constexpr std::size_t kN = 9;
+  RunOptions first = options_in(dir);
+  std::size_t done = 0;
+  first.progress = [&](const Progress& p) { done = p.done; };
+  first.stop = [&] { return done >= kN; };
+  const StudyResult cut = run_study(s, first);
+  ASSERT_EQ(cut.status, "stopped");
+  RunOptions again = options_in(dir);
+  again.resume = true;
+  const StudyResult resumed = run_study(s, again);
+  ASSERT_EQ(resumed.reused_evaluations, kN);
+  ASSERT_TRUE(resumed.best);
+
+  // The designs taken from the store carried warnings, and each row holds
+  // exactly what a fresh evaluation of its design says.
+  const StudyProblem problem(s);
+  const auto rows = rows_of(resumed, s);
+  ASSERT_GE(rows.size(), kN);
+  std::size_t reused_with_warnings = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].warnings, problem.evaluate_design(rows[i].x).warnings) << "row " << rows[i].id;
+    if (i < kN && !rows[i].warnings.empty()) ++reused_with_warnings;
+  }
+  EXPECT_GT(reused_with_warnings, 0u);
+
+  EXPECT_EQ(resumed.warnings, full.warnings);
+  EXPECT_EQ(bits(resumed.best->x), bits(full.best->x));
+  EXPECT_EQ(resumed.best->warnings, full.best->warnings);
+  EXPECT_EQ(full.best->warnings, problem.evaluate_design(full.best->x).warnings);
+}
+
+// A design answered entirely from the store (evaluate: the start design)
+// reports the warnings it was recorded with.
+TEST(StudyResume, DesignTakenFromTheStoreKeepsItsOwnWarnings) {
+  StudySpec s = railway_spec(StudyKind::kEvaluate);
+  s.variables = {continuous("pinion.pressure_angle", 10 * kDeg, 20 * kDeg, 14 * kDeg)};
+  s.report_metrics = {metrics::parse_metric_request("contact_ratio")};
+  const std::string dir = fresh_dir("warn_evaluate");
+  const StudyResult fresh = run_study(s, options_in(dir));
+  ASSERT_TRUE(fresh.best);
+  ASSERT_FALSE(fresh.best->warnings.empty());
+  bool undercut = false;
+  for (const auto& w : fresh.best->warnings) undercut = undercut || w.find("pinion undercut") != std::string::npos;
+  EXPECT_TRUE(undercut);
+  RunOptions again = options_in(dir);
+  again.resume = true;
+  const StudyResult reused = run_study(s, again);
+  ASSERT_EQ(reused.reused_evaluations, 1u);
+  ASSERT_TRUE(reused.best);
+  EXPECT_EQ(reused.best->warnings, fresh.best->warnings);
+  EXPECT_EQ(reused.warnings, fresh.warnings);
+}
+
 
 TEST(StudyPareto, FrontIsFeasibleNonDominatedAndSpread) {
   StudySpec s = railway_spec(StudyKind::kPareto);

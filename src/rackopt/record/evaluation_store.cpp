@@ -13,8 +13,10 @@
 namespace rackopt::record {
 namespace {
 
-// Bumped whenever the tables change incompatibly.
-constexpr const char* kSchemaVersion = "rackopt-evaluations 1";
+// Bumped whenever the tables change. Version 2 added evaluations.warnings;
+// a version-1 file is upgraded in place when opened (add_warnings_column).
+constexpr const char* kSchemaVersion = "rackopt-evaluations 2";
+constexpr const char* kSchemaVersion1 = "rackopt-evaluations 1";
 constexpr const char* kSchemaKey = "rackopt.schema";
 constexpr const char* kFingerprintKey = "rackopt.study_fingerprint";
 
@@ -35,13 +37,14 @@ CREATE TABLE IF NOT EXISTS evaluations(
   ok INTEGER NOT NULL,
   message TEXT NOT NULL,
   gradient_probe INTEGER NOT NULL,
-  seconds REAL NOT NULL);
+  seconds REAL NOT NULL,
+  warnings TEXT NOT NULL DEFAULT '');
 CREATE INDEX IF NOT EXISTS evaluations_by_x ON evaluations(x_hash);
 )sql";
 
 constexpr const char* kSelectColumns =
     "SELECT id, phase, x, objectives, inequality, equality, metric_ids, metric_values, ok, message, "
-    "gradient_probe, seconds FROM evaluations ";
+    "gradient_probe, seconds, warnings FROM evaluations ";
 
 // --- little-endian byte encoding of numbers (bit exact, portable files) -----
 template <class T>
@@ -74,6 +77,54 @@ std::int64_t hash_bytes(const std::string& bytes) {
     h *= 1099511628211ull;
   }
   return std::bit_cast<std::int64_t>(h);
+}
+
+// Warnings as one TEXT cell: each warning followed by a line break; inside a
+// warning a backslash is written as two backslashes and a line break as
+// backslash-n. So any list (empty strings and line breaks included) reads
+// back unchanged, and the usual case stays one readable line per warning in
+// the sqlite3 shell.
+std::string encode_warnings(const std::vector<std::string>& warnings) {
+  std::string out;
+  for (const auto& w : warnings) {
+    for (char c : w) {
+      if (c == '\\') {
+        out += "\\\\";
+      } else if (c == '\n') {
+        out += "\\n";
+      } else {
+        out.push_back(c);
+      }
+    }
+    out.push_back('\n');
+  }
+  return out;
+}
+
+// The inverse of encode_warnings; false on text it cannot have written.
+bool decode_warnings(const std::string& text, std::vector<std::string>& out) {
+  out.clear();
+  std::string w;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') {
+      out.push_back(std::move(w));
+      w.clear();
+    } else if (c == '\\') {
+      if (i + 1 >= text.size()) return false;
+      const char n = text[++i];
+      if (n == '\\') {
+        w.push_back('\\');
+      } else if (n == 'n') {
+        w.push_back('\n');
+      } else {
+        return false;
+      }
+    } else {
+      w.push_back(c);
+    }
+  }
+  return w.empty();  // every warning ends with '\n'
 }
 
 struct StmtDeleter {
@@ -260,6 +311,7 @@ struct EvaluationStore::Impl {
     e.message = text(9);
     e.gradient_probe = sqlite3_column_int(s, 10) != 0;
     e.seconds = sqlite3_column_double(s, 11);
+    if (!decode_warnings(text(12), e.warnings)) fail("reading a row (malformed warnings)", SQLITE_CORRUPT);
     return e;
   }
 
@@ -338,10 +390,16 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
                                            const std::vector<std::string>& variable_names, bool resume) {
   exec(kCreateSchema, "creating the tables");
   const auto schema = read_meta(kSchemaKey);
-  if (schema && *schema != kSchemaVersion) {
+  if (schema && *schema != kSchemaVersion && *schema != kSchemaVersion1) {
     throw std::runtime_error("'" + path + "' was written by another rackopt version (" + *schema +
                              ", this one reads " + kSchemaVersion +
                              "); delete it or choose another --out folder.");
+  }
+  // Version 1 had no warnings column: add it (rows recorded before read as
+  // having no warning). Inside the open transaction, so a refused open below
+  // rolls the upgrade back with everything else.
+  if (scalar("SELECT count(*) FROM pragma_table_info('evaluations') WHERE name = 'warnings'") == 0) {
+    exec("ALTER TABLE evaluations ADD COLUMN warnings TEXT NOT NULL DEFAULT ''", "adding the warnings column");
   }
   count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations"));
   if (count > 0) {
@@ -370,6 +428,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
                                "fingerprint but different names or order); choose another --out folder.");
     }
     failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));
+    if (schema.value_or("") != kSchemaVersion) write_meta(kSchemaKey, kSchemaVersion);  // upgraded above
   } else {
     // Nothing recorded: the file is (re)claimed by this study.
     exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
@@ -400,7 +459,8 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
   commit = prepare("COMMIT");
   insert_eval = prepare(
       "INSERT INTO evaluations(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
-      "metric_values, ok, message, gradient_probe, seconds) VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12)");
+      "metric_values, ok, message, gradient_probe, seconds, warnings) "
+      "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13)");
   insert_metric_name = prepare("INSERT INTO metric_names(metric_id, name) VALUES(?1, ?2)");
   find_by_x = prepare(
       (std::string(kSelectColumns) + "WHERE x_hash = ?1 AND x = ?2 ORDER BY id LIMIT 1").c_str());
@@ -447,6 +507,7 @@ std::int64_t EvaluationStore::append(const RecordedEvaluation& e) {
   m.bind_text(s, 10, e.message);
   sqlite3_bind_int(s, 11, e.gradient_probe ? 1 : 0);
   sqlite3_bind_double(s, 12, e.seconds);
+  m.bind_text(s, 13, encode_warnings(e.warnings));
   m.run(s, "recording an evaluation");
   const std::int64_t id = sqlite3_last_insert_rowid(m.db);
   ++m.count;

@@ -43,6 +43,10 @@ struct RecordedEvaluation {
   std::string message;  // why a failed evaluation failed (may be set for ok ones too)
   bool gradient_probe = false;  // made for a finite-difference gradient
   double seconds = 0;           // wall time of the evaluation
+  // Model warnings of this design, in the order the models gave them; any
+  // text round-trips. Rows recorded by a store of schema version 1 (before
+  // warnings were recorded) read back with none.
+  std::vector<std::string> warnings;
 };
 
 // The output folder already holds results this run may not touch: another
@@ -74,7 +78,10 @@ class EvaluationStore {
   //    takes the given fingerprint and variable names whatever resume says.
   //  * `variable_names` (the dimension of every x) are stored in the file.
   // Also throws std::runtime_error when the file is not a rackopt evaluation
-  // database, has another schema version, or is held by another store.
+  // database, has a schema version this one does not read, or is held by
+  // another store. A file of the previous schema version (1, without
+  // warnings) is upgraded to the current one in place, unless the open is
+  // refused (then the file is left as it was); docs/recorder.md.
   static EvaluationStore open(const std::string& path, const std::string& study_fingerprint,
                               const std::vector<std::string>& variable_names, bool resume,
                               StoreOptions options = {});

@@ -347,7 +347,19 @@ void json_design(JsonWriter& j, const StudySpec& spec, const DesignResult& d, st
   j.key("feasible").value(d.feasible);
   j.key("max_violation").value(d.max_violation);  // +inf (failed) is written as null
   j.key("message").value(d.message);
+  j.key("warnings").begin_array();
+  for (const auto& w : d.warnings) j.value(w);
+  j.end_array();
   j.end_object();
+}
+
+// The best (pareto: chosen) design's own warnings, then those of `run_warnings`
+// not among them: the optimum's remarks are the ones a reader acts on.
+std::vector<std::string> best_first(const StudyResult& r, const std::vector<std::string>& run_warnings) {
+  std::vector<std::string> out = r.best ? r.best->warnings : std::vector<std::string>{};
+  for (const auto& w : run_warnings)
+    if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  return out;
 }
 
 // ---- plots ------------------------------------------------------------------
@@ -676,10 +688,15 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   if (fresh > 0) o << " (" << short_num(result.seconds * 1000.0 / static_cast<double>(fresh)) << " ms per new evaluation)";
   o << "\n\n";
 
-  if (!warnings.empty()) {
-    o << "## Warnings\n\n";
-    for (const auto& w : warnings) o << "- " << md_cell(w) << "\n";
-    o << "\n";
+  {
+    const std::vector<std::string> listed = best_first(result, warnings);
+    const std::size_t own = result.best ? result.best->warnings.size() : 0;
+    if (own > 0) o << "## Warnings of the best design\n\n";
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      if (i == own) o << (own > 0 ? "\n## Other warnings of the run\n\n" : "## Warnings\n\n");
+      o << "- " << md_cell(listed[i]) << "\n";
+    }
+    if (!listed.empty()) o << "\n";
   }
 
   o << "## Files\n\n";
@@ -856,7 +873,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("failed_evaluations").value(static_cast<long>(result.failed_evaluations));
   j.key("reused_evaluations").value(static_cast<long>(result.reused_evaluations));
   j.key("warnings").begin_array();
-  for (const auto& w : warnings.empty() ? result.warnings : warnings) j.value(w);
+  for (const auto& w : best_first(result, warnings.empty() ? result.warnings : warnings)) j.value(w);
   j.end_array();
   const std::size_t fresh =
       result.evaluations >= result.reused_evaluations ? result.evaluations - result.reused_evaluations : 0;

@@ -62,7 +62,8 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
 // chosen, evaluations, failed_evaluations, reused_evaluations, warnings,
 // timings {seconds, report_seconds, per_evaluation_ms}, files {role: path}.
 // Field by field in docs/output.md. `warnings` replaces result.warnings when
-// not empty (the report adds its own).
+// not empty (the report adds its own); either way the best design's own
+// warnings (also in best.warnings) are listed first.
 std::string study_summary_json(const StudySpec& spec, const StudyResult& result, const ReportFiles& files,
                                const ReportTimings& timings, const std::vector<std::string>& warnings = {});
 

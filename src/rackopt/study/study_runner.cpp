@@ -100,6 +100,7 @@ class Runner {
       d.metric_ok[i] = true;
     }
     d.evaluation = base_.map_metrics(d.metric_values, d.metric_ok, r.message);
+    d.warnings = r.warnings;
     if (!r.ok && d.evaluation.ok()) {
       // Recorded as failed although every metric is present: trust the record.
       d.evaluation = solvers::Evaluation{};
@@ -137,10 +138,12 @@ class Runner {
     const DesignEvaluation& d = o.design;
     if (o.origin == Origin::kNew) {
       append(d, label, gradient_probe);
-      for (const auto& w : d.warnings) add_warning(w);
     } else {
       ++result_.reused_evaluations;
     }
+    // New and reused alike, at the design's first use: a resumed run lists
+    // the warnings in the order of an uninterrupted one.
+    for (const auto& w : d.warnings) add_warning(w);
     ++result_.evaluations;
     if (!d.evaluation.ok()) ++result_.failed_evaluations;
     track(d, label, ranks);
@@ -165,6 +168,7 @@ class Runner {
     r.max_violation = solvers::max_violation(d.evaluation);
     r.feasible = solvers::is_feasible(d.evaluation, spec_.solver.constraint_tolerance);
     r.message = d.evaluation.message;
+    r.warnings = d.warnings;
     r.label = label;
     r.objectives = own_objectives(d);
     return r;
@@ -209,6 +213,7 @@ class Runner {
     e.message = d.evaluation.message;
     e.gradient_probe = gradient_probe;
     e.seconds = std::isfinite(d.seconds) ? d.seconds : 0.0;
+    e.warnings = d.warnings;
     store_->append(e);
   }
 

@@ -33,6 +33,7 @@ struct DesignResult {
   bool ok = false;                       // every metric computed
   bool feasible = false;                 // ok and max_violation <= solver.constraint_tolerance
   std::string message;                   // why it failed, or remarks
+  std::vector<std::string> warnings;     // this design's own model warnings (also when taken from the store)
   std::string label;                     // "start 0", "front 3 (eps 2)", "sweep 17", "combination 2: pinion.module=25 mm"
 };
 
@@ -53,7 +54,8 @@ struct StudyResult {
   std::size_t reused_evaluations = 0;          // of which taken from the store on --resume
   std::size_t failed_evaluations = 0;
   std::string solver_message;
-  std::vector<std::string> warnings;           // model warnings, listed once
+  std::vector<std::string> warnings;           // model warnings, listed once, in the order the designs
+                                               // were first used (the same after --resume)
   double seconds = 0;                          // wall time of this run
   std::string database_path;                   // <out>/evaluations.sqlite
   std::string evaluations_csv_path;            // <out>/evaluations.csv, written by run_study from the store
