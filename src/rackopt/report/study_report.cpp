@@ -1,5 +1,7 @@
 #include "rackopt/report/study_report.hpp"
 
+#include "rackopt/report/optimum_report.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -662,6 +664,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     const bool single = spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability;
     o << (single ? "### Design" : "### Best design") << (result.best->label.empty() ? "" : " (" + result.best->label + ")") << "\n\n";
     md_design(o, spec, *result.best);
+    o << explanation_markdown(spec, result) << per_combination_markdown(spec, result);
   }
   if (result.least_infeasible) {
     o << "### Least infeasible design"
@@ -673,11 +676,13 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     o << "Sweep: " << result.sweep_points.size() << " points, " << feasible << " feasible.\n\n";
   }
 
+  o << sweep_sensitivity_markdown(spec, result);
   if (result.reliability && result.best_drive) {
     o << "### Wear life and reliability of the design\n\n```\n"
       << wear_summary(*result.best_drive, *result.reliability) << "```\n\n";
   }
 
+  o << fidelity_markdown(result);
   o << "## Counts and timings\n\n";
   const std::size_t fresh = result.evaluations >= result.reused_evaluations
                                 ? result.evaluations - result.reused_evaluations
@@ -869,6 +874,9 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
     wf.reliability_png = files.get("reliability_png");
     j.key("reliability").raw(wear_json(*result.best_drive, *result.reliability, wf, 0.0));
   }
+  optimum_json(j, spec, result, [](JsonWriter& w, const StudySpec& sp, const DesignResult& d) {
+    json_design(w, sp, d, std::nullopt);
+  });
   j.key("evaluations").value(static_cast<long>(result.evaluations));
   j.key("failed_evaluations").value(static_cast<long>(result.failed_evaluations));
   j.key("reused_evaluations").value(static_cast<long>(result.reused_evaluations));

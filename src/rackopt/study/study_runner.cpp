@@ -18,6 +18,7 @@
 
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/fidelity_settings.hpp"
 #include "rackopt/study/study_problem.hpp"
 
 namespace rackopt::study {
@@ -189,6 +190,15 @@ class Runner {
   const std::optional<DesignResult>& least_infeasible() const { return least_; }
   bool any_ok() const { return any_ok_; }
   std::size_t best_tag() const { return best_tag_; }
+  // Best feasible / least infeasible design recorded under tag t.
+  std::optional<DesignResult> best_of_tag(std::size_t t) const {
+    const auto it = tag_best_.find(t);
+    return it == tag_best_.end() ? std::nullopt : it->second;
+  }
+  std::optional<DesignResult> least_infeasible_of_tag(std::size_t t) const {
+    const auto it = tag_least_.find(t);
+    return it == tag_least_.end() ? std::nullopt : it->second;
+  }
   void set_tag(std::size_t t) { tag_ = t; }
 
   std::vector<std::string> warnings() const {
@@ -240,9 +250,16 @@ class Runner {
           best_scaled_ = f;
           best_tag_ = tag_;
         }
+        auto& tb = tag_best_[tag_];
+        if (!tb || (has_objective && f < tag_best_scaled_[tag_])) {
+          tb = to_result(d, label);
+          tag_best_scaled_[tag_] = f;
+        }
       } else {
         const double v = solvers::max_violation(e);
         if (!least_ || v < least_->max_violation) least_ = to_result(d, label);
+        auto& tl = tag_least_[tag_];
+        if (!tl || v < tl->max_violation) tl = to_result(d, label);
       }
     }
     const bool maximize = has_objective && spec_.objectives[0].maximize;
@@ -265,6 +282,8 @@ class Runner {
   std::optional<DesignResult> best_, least_;
   double best_scaled_ = 0;
   std::size_t best_tag_ = 0, tag_ = 0;
+  std::map<std::size_t, std::optional<DesignResult>> tag_best_, tag_least_;
+  std::map<std::size_t, double> tag_best_scaled_;
   bool any_ok_ = false;
   std::set<std::string> warning_set_;
   std::vector<std::string> warnings_;
@@ -631,6 +650,17 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
         if (status == "no_feasible_point" || status == "all_failed" || status.empty()) status = "converged";
       }
       result.best = run.best();
+      if (combos > 1) {
+        for (std::size_t c = 0; c < combos; ++c) {
+          CombinationOutcome co;
+          co.label = base.for_combination(c).combination_label();
+          co.status = statuses[c];
+          co.best = run.best_of_tag(c);
+          if (!co.best) co.least_infeasible = run.least_infeasible_of_tag(c);
+          result.per_combination.push_back(std::move(co));
+        }
+      }
+      if (result.best && !run.stopped()) result.explanation = explain_optimum(base, result.best->x, run.threads());
       break;
     }
 
@@ -758,6 +788,11 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   }
   result.status = status;
   result.warnings = run.warnings();
+  try {
+    result.fidelity = fidelity_settings(base.drive_at(result.best ? result.best->x : base.start_design()), spec);
+  } catch (const std::exception&) {
+    // A design the loader refuses has no settings to show; the report says none.
+  }
   result.database_path = db_path;
   result.evaluations_csv_path = csv_path;
 

@@ -18,6 +18,7 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/study_spec.hpp"
 
 namespace rackopt::study {
@@ -35,6 +36,14 @@ struct DesignResult {
   std::string message;                   // why it failed, or remarks
   std::vector<std::string> warnings;     // this design's own model warnings (also when taken from the store)
   std::string label;                     // "start 0", "front 3 (eps 2)", "sweep 17", "combination 2: pinion.module=25 mm"
+};
+
+// One discrete combination's outcome in an optimize study.
+struct CombinationOutcome {
+  std::string label;                         // "pinion.module=4 mm"
+  std::string status;                        // the solver's status for this combination
+  std::optional<DesignResult> best;          // best feasible design of the combination
+  std::optional<DesignResult> least_infeasible;  // when none is feasible
 };
 
 struct StudyResult {
@@ -65,6 +74,14 @@ struct StudyResult {
   // reliability: the full wear reliability analysis of the design, for the
   // same CSVs and plots as `rackopt wear` (output/wear_report.hpp).
   std::shared_ptr<const WearReliabilityResult> reliability;
+  // optimize with discrete variables: the best design of each combination
+  // (feasible, else the least infeasible, else none), combination order.
+  std::vector<CombinationOutcome> per_combination;
+  // optimize: why the best design is the optimum (binding constraints,
+  // variables at bounds, gradients, multipliers).
+  std::optional<OptimumExplanation> explanation;
+  // The fidelity settings the models ran with (name, value as text).
+  std::vector<std::pair<std::string, std::string>> fidelity;
 };
 
 // Progress as the runner reports it (for the progress bar).

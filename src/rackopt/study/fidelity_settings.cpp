@@ -1,0 +1,44 @@
+#include "rackopt/study/fidelity_settings.hpp"
+
+#include "rackopt/units/units.hpp"
+
+namespace rackopt::study {
+
+std::vector<std::pair<std::string, std::string>> fidelity_settings(const Drive& d, const StudySpec& spec) {
+  std::vector<std::pair<std::string, std::string>> out;
+  auto num = [](double v) { return format_number(v, 6); };
+  auto on = [](bool b) { return std::string(b ? "on" : "off"); };
+  out.emplace_back("numerics.quadrature_order", d.numerics.adaptive_quadrature ? "adaptive (GSL QAGS)"
+                                                                                : num(d.numerics.quadrature_order));
+  out.emplace_back("numerics.positions_per_period", num(d.numerics.positions_per_period));
+  if (d.wear.coefficient > 0) {
+    out.emplace_back("wear.profile_points", num(d.wear.profile_points));
+    out.emplace_back("wear.block_fraction", num(d.wear.block_fraction));
+    out.emplace_back("wear.update_profile", on(d.wear.update_profile));
+  }
+  bool life_at_R = false;
+  for (const auto& m : spec.all_metrics()) life_at_R = life_at_R || m.name == "wear_life_at_R";
+  if (life_at_R) {
+    const metrics::MetricOptions& o = spec.metric_options;
+    const std::size_t inputs = d.reliability.inputs.size();
+    const bool exact = inputs == 1 && o.exact_quantile;
+    out.emplace_back("reliability inputs", num(static_cast<double>(inputs)));
+    if (exact) {
+      out.emplace_back("life at R", "exact quantile of the one random input (no sampling)");
+    } else if (inputs > 0) {
+      out.emplace_back("reliability samples", num(o.reliability_samples > 0 ? static_cast<double>(o.reliability_samples)
+                                                                            : d.reliability.samples));
+      out.emplace_back("reliability seed", num(o.reliability_seed >= 0 ? static_cast<double>(o.reliability_seed)
+                                                                       : static_cast<double>(d.reliability.seed)));
+      out.emplace_back("reliability sampling", d.reliability.sobol ? "sobol" : "pseudo");
+      out.emplace_back("bootstrap replicates", num(o.bootstrap_replicates > 0 ? o.bootstrap_replicates
+                                                                              : d.reliability.bootstrap_replicates));
+      out.emplace_back("life table", inputs == 1 ? on(d.reliability.life_table) + ", tolerance " +
+                                                       num(d.reliability.life_table_tolerance)
+                                                 : "off (several inputs)");
+    }
+  }
+  return out;
+}
+
+}  // namespace rackopt::study

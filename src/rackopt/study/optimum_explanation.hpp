@@ -1,0 +1,67 @@
+// Why the optimum is where it is: which constraints bind and which variables
+// sit at a bound, the finite-difference gradients of the objective and of
+// every constraint there, and the Lagrange-multiplier sensitivity of the
+// objective to each binding constraint's bound (how much objective one unit
+// of that bound costs). docs/studies.md, "Explaining the optimum".
+//
+// The runner computes it after an optimize study on its best design (the
+// report never runs a model). It costs at most two evaluations per
+// continuous variable, not recorded in the store; being deterministic, a
+// resumed run computes the same numbers.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rackopt/study/study_problem.hpp"
+#include "rackopt/study/study_spec.hpp"
+
+namespace rackopt::study {
+
+struct ConstraintStatus {
+  std::string label;             // metric label
+  std::string side;              // "min", "max" or "equals": the bound nearest the value
+  double value = 0;              // SI
+  double bound = 0;              // SI
+  double relative_slack = 0;     // (value - bound)/scale on the feasible side positive (min: v - b; max: b - v)
+  bool active = false;           // |relative slack| <= kActiveTolerance (or an equality)
+  // d objective* / d bound [objective unit per metric unit] when active and
+  // the gradients allow: the objective's change when the bound moves by one
+  // unit (positive = tightening a min bound or relaxing a max bound costs).
+  std::optional<double> bound_sensitivity;
+  std::vector<std::optional<double>> gradient;  // d value / d x_i per continuous variable (SI per SI)
+};
+
+struct VariableStatus {
+  std::string key;
+  double value = 0;          // SI
+  bool discrete = false;
+  bool at_lower = false, at_upper = false;  // within 1e-6 of the range (continuous only)
+  double step = 0;           // finite-difference step used [SI]; 0 for discrete
+  std::string difference;    // "central", "forward", "backward", or "" (discrete)
+};
+
+struct OptimumExplanation {
+  std::string objective;                                 // label of objective 0
+  std::vector<std::optional<double>> objective_gradient;  // d objective / d x_i per continuous variable
+  std::vector<std::string> gradient_variables;           // their keys
+  std::vector<VariableStatus> variables;                 // every variable, spec order
+  std::vector<ConstraintStatus> constraints;             // spec order
+  double kkt_residual = 0;  // |grad F + sum lambda grad g| / |grad F| on the free variables (0 = exact)
+  std::string note;         // how it was computed, and what could not be
+};
+
+// A constraint counts as active within this relative slack (its scale:
+// ConstraintSpec::scale, else |bound|, else 1). Solvers stop within ~1e-4 of
+// a bound at their default tolerances.
+inline constexpr double kActiveTolerance = 1e-3;
+// Finite-difference step as a fraction of each continuous variable's range:
+// large enough to step over the wear lives' block-wise steps (docs/metrics.md).
+inline constexpr double kGradientStep = 1e-2;
+
+// Explains the design x (full SI, e.g. the best design of an optimize
+// study) of `problem`. Objective 0 is explained (the runner minimizes it).
+OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vector<double>& x, unsigned threads = 1);
+
+}  // namespace rackopt::study
