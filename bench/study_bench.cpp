@@ -229,6 +229,43 @@ void run_whole_study(benchmark::State& state, const st::StudySpec& spec, unsigne
 }
 
 // studies/rack_railway_sizing.yaml as shipped (3 modules, COBYLA, 300 per
+// The gantry sizing problem (studies/gantry_sizing.yaml): the size metrics
+// alone on its nominal drive (arg 0: pinion_pitch_diameter, pinion_tip_diameter,
+// rack_mass_per_metre, pinion_torque, drive_power: closed forms; arg 1:
+// pinion_mass: geometry + outline area; arg 2: cost_per_metre), and (arg 3)
+// one whole design evaluation of the study (stresses, contact ratio, wear
+// life at R by its exact quantile, the size metrics).
+void BM_GantryMetrics(benchmark::State& state) {
+  const st::StudySpec spec = st::load_study_file(kStudies + "gantry_sizing.yaml");
+  const st::StudyProblem base(spec);
+  const rackopt::Drive drive = base.drive_at(base.start_design());
+  std::vector<rackopt::metrics::MetricRequest> q;
+  const int which = static_cast<int>(state.range(0));
+  if (which == 0) {
+    for (const char* n : {"pinion_pitch_diameter", "pinion_tip_diameter", "rack_mass_per_metre", "pinion_torque",
+                          "drive_power"})
+      q.push_back(rackopt::metrics::parse_metric_request(n));
+  } else if (which == 1) {
+    q.push_back(rackopt::metrics::parse_metric_request("pinion_mass"));
+  } else if (which == 2) {
+    q.push_back(rackopt::metrics::parse_metric_request("cost_per_metre"));
+  }
+  std::size_t failed = 0;
+  for (auto _ : state) {
+    if (which == 3) {
+      const st::DesignEvaluation d = base.evaluate_design(base.start_design());
+      failed += d.evaluation.ok() ? 0 : 1;
+      benchmark::DoNotOptimize(d.metric_values.data());
+    } else {
+      const rackopt::metrics::MetricValues v = rackopt::metrics::evaluate_metrics(drive, q, spec.metric_options);
+      failed += v.all_ok() ? 0 : 1;
+      benchmark::DoNotOptimize(v.values.data());
+    }
+  }
+  rate_counters(state, failed);
+}
+BENCHMARK(BM_GantryMetrics)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMicrosecond);
+
 // module, xtol_rel 1e-5).
 void BM_SizingStudy(benchmark::State& state) {
   run_whole_study(state, sizing_spec(0, false), 1, "sizing");
