@@ -115,7 +115,7 @@ TEST(WearKeys, ShipLiftSeed004Data) {
   EXPECT_EQ(r.inputs[0].key, "contact_ratio");
   EXPECT_EQ(r.inputs[0].distribution, RandomInput::Distribution::kNormal);
   // Around the design's own contact ratio (the paper's zero clearance: 1.536,
-  // the largest this pair can have, physics.md 12.2), calibrated against the
+  // the largest this pair can have, docs/models/reliability.md), calibrated against the
   // seed's R(t) table: shifted below it, with about 0.6 % of the samples
   // above it (z = 2.5).
   EXPECT_FALSE(r.inputs[0].absolute);
