@@ -225,7 +225,8 @@ TEST(WearCli, LifeAtRAboveTheNominalLifeIsAWarning) {
   // The shipped scatter (shifted below the design) does not warn.
   const CliResult s = run("wear problems/ship_lift.yaml --json --samples 200 --out " + tmp_dir("nowarn"));
   ASSERT_EQ(s.code, 0);
-  for (const auto& w : nlohmann::json::parse(s.out)["warnings"])
+  const auto js = nlohmann::json::parse(s.out);  // a named object: the loop must not outlive it
+  for (const auto& w : js["warnings"])
     EXPECT_EQ(w.get<std::string>().find("above the nominal"), std::string::npos) << w;
 }
 
