@@ -1,4 +1,5 @@
 #include "rackopt/study/sweep_sensitivity.hpp"
+#include "rackopt/study/study_runner.hpp"
 
 #include <gtest/gtest.h>
 

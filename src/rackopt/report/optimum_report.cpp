@@ -137,13 +137,11 @@ std::string fidelity_markdown(const StudyResult& r) {
 }
 
 std::string sweep_sensitivity_markdown(const StudySpec& spec, const StudyResult& r) {
-  if (spec.kind != StudyKind::kSweep || r.sweep_points.empty()) return "";
-  const std::vector<MetricSensitivity> s = sweep_sensitivity(spec, r.sweep_points);
-  if (s.empty()) return "";
+  if (spec.kind != StudyKind::kSweep || r.sensitivity.empty()) return "";
   return "## Sensitivity over the design box\n\nSobol indices from the sweep's own points "
          "(docs/models/sensitivity.md): S_i is the share of a metric's variance that the variable explains alone, "
          "S_Ti with its interactions.\n\n" +
-         sensitivity_markdown(s) + "\n";
+         sensitivity_markdown(r.sensitivity) + "\n";
 }
 
 void optimum_json(JsonWriter& j, const StudySpec& spec, const StudyResult& r,
@@ -211,9 +209,9 @@ void optimum_json(JsonWriter& j, const StudySpec& spec, const StudyResult& r,
     for (const auto& [k, v] : r.fidelity) j.key(k).value(v);
     j.end_object();
   }
-  if (spec.kind == StudyKind::kSweep && !r.sweep_points.empty()) {
+  if (spec.kind == StudyKind::kSweep && !r.sensitivity.empty()) {
     j.key("sensitivity");
-    sensitivity_json(j, sweep_sensitivity(spec, r.sweep_points));
+    sensitivity_json(j, r.sensitivity);
   }
 }
 

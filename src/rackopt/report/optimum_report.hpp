@@ -20,7 +20,7 @@ std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r
 std::string explanation_markdown(const StudySpec& spec, const StudyResult& result);
 // "## Fidelity settings" ("" when none were recorded).
 std::string fidelity_markdown(const StudyResult& result);
-// "## Sensitivity over the design box" for sweeps ("" otherwise).
+// "## Sensitivity over the design box" for sweeps (StudyResult::sensitivity; "" otherwise).
 std::string sweep_sensitivity_markdown(const StudySpec& spec, const StudyResult& result);
 
 // summary.json members (each writes its key and value; nothing when absent):

@@ -605,6 +605,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           if (p.ok && (!result.least_infeasible || p.max_violation < result.least_infeasible->max_violation))
             result.least_infeasible = p;
       }
+      if (!result.sweep_points.empty()) result.sensitivity = sweep_sensitivity(spec, result.sweep_points);
       if (!result.sweep_points.empty() && !run.stopped()) {
         bool any_ok = false;
         for (const auto& p : result.sweep_points) any_ok = any_ok || p.ok;

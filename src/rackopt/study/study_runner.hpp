@@ -20,6 +20,7 @@
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/study_spec.hpp"
+#include "rackopt/study/sweep_sensitivity.hpp"
 
 namespace rackopt::study {
 
@@ -82,6 +83,8 @@ struct StudyResult {
   std::optional<OptimumExplanation> explanation;
   // The fidelity settings the models ran with (name, value as text).
   std::vector<std::pair<std::string, std::string>> fidelity;
+  // sweep: Sobol ranking of the variables for every metric, from the points.
+  std::vector<MetricSensitivity> sensitivity;
 };
 
 // Progress as the runner reports it (for the progress bar).

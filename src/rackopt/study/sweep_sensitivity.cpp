@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "rackopt/doe/samplers.hpp"
+#include "rackopt/study/study_runner.hpp"
 
 namespace rackopt::study {
 namespace {

@@ -15,10 +15,11 @@
 #include <vector>
 
 #include "rackopt/output/json_writer.hpp"
-#include "rackopt/study/study_runner.hpp"
 #include "rackopt/study/study_spec.hpp"
 
 namespace rackopt::study {
+
+struct DesignResult;  // study_runner.hpp
 
 // How one variable drives one metric.
 struct VariableSensitivity {
