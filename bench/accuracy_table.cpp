@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -172,7 +173,7 @@ double signed_rel(double a, double ref) { return (a - ref) / std::abs(ref); }
 // One deterministic case of the wear tables.
 struct WearCase {
   const char* label;
-  double contact_ratio;      // WearSample::contact_ratio (0 = nominal)
+  std::optional<double> contact_ratio;  // WearSample::contact_ratio (empty = nominal)
   bool update_profile;
   double min_contact_ratio;  // < 0: the problem's
 };
@@ -345,8 +346,8 @@ void wear_tables(const std::string& file) {
 
   std::printf("Profile points (block_fraction %g; error signed, relative to %d points):\n\n", d.wear.block_fraction,
               kReferencePoints);
-  profile_points_table(d, {{"nominal, update off", 0, false, -1},
-                           {"nominal, update on", 0, true, -1},
+  profile_points_table(d, {{"nominal, update off", std::nullopt, false, -1},
+                           {"nominal, update on", std::nullopt, true, -1},
                            {"ε 1.44, update off", 1.44, false, -1},
                            {"ε 1.44, update on", 1.44, true, -1}});
 
@@ -356,7 +357,7 @@ void wear_tables(const std::string& file) {
 
   std::printf("Block fraction (update on, profile_points %d; error relative to block_fraction %g):\n\n",
               d.wear.profile_points, kReferenceBlock);
-  block_fraction_table(d, {{"nominal", 0, true, -1}, {"ε 1.44", 1.44, true, -1}, cr_case});
+  block_fraction_table(d, {{"nominal", std::nullopt, true, -1}, {"ε 1.44", 1.44, true, -1}, cr_case});
 
   if (d.reliability.inputs.size() == 1) {
     std::printf("Life at R vs samples and sampling (the problem's settings, seeds 1..n per row, 1 thread, "

@@ -11,8 +11,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 
 namespace {
@@ -207,6 +209,124 @@ TEST(WearCli, AbsoluteInputWithAnOverrideThatMovesItIsBadInput) {
   }
   const CliResult ok = run("wear problems/ship_lift.yaml --json --samples 20" + absolute + " --out " + tmp_dir("abs_ok"));
   EXPECT_EQ(ok.code, 0);
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+long count_containing(const nlohmann::json& warnings, const std::string& part) {
+  long n = 0;
+  for (const auto& w : warnings) n += w.get<std::string>().find(part) != std::string::npos ? 1 : 0;
+  return n;
+}
+
+// A Weibull contact ratio of tiny shape: its quantiles underflow to exactly 0
+// and overflow to infinity. A 0 is a sampled contact ratio, not "not
+// sampled": it fails at once (it got the nominal life with status ok), and
+// life_samples.csv holds no inf or nan (the infinite inputs are failed
+// samples with an empty value and a message).
+TEST(WearCli, ContactRatioZeroFailsAtOnceAndNoInfinityReachesTheFiles) {
+  const std::string dir = tmp_dir("zero_eps");
+  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random=[{input: "
+                          "contact_ratio, distribution: weibull, scale: 1.4, shape: 0.001, absolute: true}]' --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* f : {"life_samples.csv", "reliability.csv", "life_histogram.csv"}) {
+    const std::string text = read_text(dir + "/" + f);
+    ASSERT_FALSE(text.empty()) << f;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << f;
+    EXPECT_EQ(text.find("nan"), std::string::npos) << f;
+  }
+  std::ifstream in(dir + "/life_samples.csv");
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "sample,contact_ratio,life_years,status,criterion,message");
+  long zeros = 0, outside = 0;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string sample, eps, life, status;
+    std::getline(ls, sample, ',');
+    std::getline(ls, eps, ',');
+    std::getline(ls, life, ',');
+    std::getline(ls, status, ',');
+    if (eps == "0") {
+      ++zeros;
+      EXPECT_EQ(life, "0") << line;
+      EXPECT_EQ(status, "ok") << line;
+    }
+    if (eps.empty()) {
+      ++outside;
+      EXPECT_TRUE(life.empty()) << line;
+      EXPECT_NE(status, "ok") << line;
+    }
+    if (status == "ok" && std::stod(life) > 0) {
+      EXPECT_GE(std::stod(eps), 1.2) << line;
+      EXPECT_LE(std::stod(eps), 1.536) << line;
+    }
+  }
+  EXPECT_GT(zeros, 50);
+  EXPECT_GT(outside, 10);
+  EXPECT_EQ(j["failed_evaluations"].get<long>(), outside);
+  EXPECT_EQ(count_containing(j["warnings"], "contact_ratio: " + std::to_string(outside) + " of 200"), 1) << j["warnings"].dump();
+}
+
+// A normal surface hardness that reaches below 0 (cv 0.5: 2.3 % of the
+// samples): those samples fail, are counted and warned about once, and the
+// run goes on like the load and the coefficient (it exited 2).
+TEST(WearCli, NonPositiveHardnessSamplesFailAndTheRunGoesOn) {
+  for (const char* key : {"surface_hardness", "load", "wear_coefficient"}) {
+    const CliResult r = run(std::string("wear problems/ship_lift.yaml --json --samples 400 --set 'reliability.random=[{input: ") +
+                            key + ", distribution: normal, cv: 0.5}]' --out " + tmp_dir(std::string("neg_") + key));
+    ASSERT_EQ(r.code, 0) << key << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    const long failed = j["failed_evaluations"].get<long>();
+    EXPECT_GT(failed, 0) << key;
+    const std::string shown = std::string(key) == "wear_coefficient" ? "wear.coefficient" : key;
+    EXPECT_EQ(count_containing(j["warnings"], shown + ": " + std::to_string(failed) + " of 400 samples"), 1)
+        << key << j["warnings"].dump();
+    EXPECT_EQ(j["status"], "ok");
+    for (const auto& [R, years] : j["exact"]["life_at_R"].items()) {
+      EXPECT_GT(years.get<double>(), 0.0) << key << " R " << R;
+    }
+  }
+}
+
+// Every sampled contact ratio above the largest the pair can have: exit 0,
+// the status and one clear warning, life 0 at every R, no internal message.
+TEST(WearCli, EveryContactRatioOutOfRangeIsReportedNotAnError) {
+  const CliResult r = run_with_stderr("wear problems/ship_lift.yaml --json --samples 100 --set "
+                                      "'reliability.random[0].shift=0.5' --set 'reliability.random[0].sd=0.01' --out " +
+                                      tmp_dir("all_out"));
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_EQ(r.out.find("strictly inside"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+  EXPECT_EQ(j["status"], "every_sample_fails_at_once");
+  EXPECT_EQ(count_containing(j["warnings"], "no life at reliability R"), 1) << j["warnings"].dump();
+  EXPECT_EQ(j["exact"]["failed_at_start"].get<double>(), 1.0);
+  for (const auto& [R, years] : j["life_at_R"].items()) EXPECT_EQ(years.get<double>(), 0.0) << R;
+  // [eps] above eps_max: the probability of failing at once is 1, not more.
+  const CliResult m = run("wear problems/ship_lift.yaml --json --samples 50 --set wear.min_contact_ratio=1.6 --out " +
+                          tmp_dir("min_above_max"));
+  ASSERT_EQ(m.code, 0) << m.out;
+  EXPECT_EQ(nlohmann::json::parse(m.out)["exact"]["failed_at_start"].get<double>(), 1.0);
+}
+
+// A reliability study whose Monte Carlo meets a hardness below 0 at R = 0.99
+// (the evaluation at R = 0.9 does not): it finishes with its summary (it
+// stopped with exit 2 after the evaluation was recorded, and no summary).
+TEST(WearCli, ReliabilityStudyWithFailedSamplesFinishesWithItsSummary) {
+  const std::string out = tmp_dir("study");
+  const CliResult r = run("run studies/ship_lift_reliability.yaml --json --set 'problem.reliability.random=[{input: "
+                          "surface_hardness, distribution: normal, cv: 0.5}]' --set metric_options.reliability_samples=400 "
+                          "--out " + out);
+  ASSERT_EQ(r.code, 0) << r.out;
+  ASSERT_TRUE(std::filesystem::exists(out + "/summary.json"));
+  const auto j = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(j["status"], "ok") << j.dump().substr(0, 400);
+  EXPECT_GT(j["reliability"]["failed_evaluations"].get<long>(), 0);
+  EXPECT_TRUE(std::filesystem::exists(out + "/life_samples.csv"));
 }
 
 // A favourable shift (the contact ratio drawn 0.05 above the design's at

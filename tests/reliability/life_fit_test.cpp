@@ -139,6 +139,22 @@ TEST(LifeFits, HardCases) {
       EXPECT_EQ(e.code(), "degenerate_life_sample");
     }
   }
+  // Spread below 1e-6 of the value (lives that differ in the 8th digit): no
+  // fit can resolve it, the same DesignError. Just above, fits exist.
+  std::vector<double> tight, resolvable;
+  for (int i = 0; i < 50; ++i) {
+    tight.push_back(3.0e9 * (1 + 1e-8 * i));
+    resolvable.push_back(3.0e9 * (1 + 1e-4 * i));
+  }
+  for (Family f : {Family::kGamma, Family::kWeibull, Family::kLognormal, Family::kNormal}) {
+    try {
+      (void)fit_life_distribution(f, tight);
+      FAIL() << family_name(f);
+    } catch (const DesignError& e) {
+      EXPECT_EQ(e.code(), "degenerate_life_sample");
+    }
+    EXPECT_TRUE(std::isfinite(fit_life_distribution(f, resolvable).aic)) << family_name(f);
+  }
   // N = 2 distinct values: fits exist and are finite.
   const std::vector<double> two{1.0, 2.0};
   for (Family f : {Family::kGamma, Family::kWeibull, Family::kLognormal}) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/life/design_scatter.hpp"
 #include "rackopt/life/life_at_R_check.hpp"
+#include "rackopt/life/sample_domain.hpp"
 #include "rackopt/reliability/distribution.hpp"
 #include "rackopt/reliability/function_table.hpp"
 #include "rackopt/reliability/sampling.hpp"
@@ -38,9 +40,64 @@ int criterion_tag(const WearLifeResult& r) {
   return 2 * c + (r.limiting_member == Member::kRack ? 0 : 1);
 }
 
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
 std::string criterion_of_tag(int tag) {
   const int c = tag / 2;
   return c < kCriteriaCount ? kCriteria[c] : std::string("other");
+}
+
+// The status of a Monte Carlo run and one summary warning per kind of failed sample
+// (docs/models/reliability.md, "Failed samples"): inputs outside their
+// domain (once per input, with the count), every sample failing at once, and
+// a life at R that is 0 because more than 1 - R of the samples fail at once.
+void failed_sample_warnings(const Drive& drive, const WearModel& model, WearReliabilityResult& out) {
+  const reliability::ReliabilitySummary& s = out.summary;
+  const std::size_t n = out.lives.size();
+  const std::string of_n = " of " + std::to_string(n) + " samples";
+  for (std::size_t k = 0; k < out.outside_domain_samples.size(); ++k) {
+    const std::size_t c = out.outside_domain_samples[k];
+    if (c == 0) continue;
+    const std::string& key = out.input_keys[k];
+    out.summary.warnings.push_back(
+        key + ": " + std::to_string(c) + of_n + " have a sampled value " +
+        (input_must_be_positive(key) ? "that is not positive or not finite" : "that is not finite") +
+        " (the distribution reaches outside the input's domain): they are not drives and are excluded as "
+        "failed evaluations; R(t) and the life at R are conditional on a valid sample" +
+        (input_must_be_positive(key) ? " (a lognormal keeps a positive input positive)" : ""));
+  }
+  const std::size_t evaluated = s.samples_total - s.failed_evaluations;
+  if (evaluated == 0) {
+    out.status = "no_valid_sample";
+    out.summary.warnings.push_back("no life at reliability R: none" + of_n +
+                           " could be evaluated, so there is no R(t) and no life at R");
+    return;
+  }
+  const std::string bounds = "contact ratio outside [" + num(std::max(1.0, drive.wear.min_contact_ratio)) + ", " +
+                             num(model.max_contact_ratio()) + "]";
+  if (s.immediate_failures == evaluated) {
+    out.status = "every_sample_fails_at_once";
+    out.summary.warnings.push_back("no life at reliability R: every evaluated sample (" + std::to_string(evaluated) + of_n +
+                           ") fails at once (life 0, " + bounds +
+                           "), so the life at every R is 0 and R(t) = 0");
+    return;
+  }
+  out.status = "ok";
+  if (s.immediate_failures == 0) return;
+  const double p0 = static_cast<double>(s.immediate_failures) / static_cast<double>(evaluated);
+  std::string unreachable;
+  for (double R : drive.reliability.reliabilities) {
+    if (p0 > 1.0 - R) unreachable += (unreachable.empty() ? "" : ", ") + num(R);
+  }
+  if (!unreachable.empty()) {
+    out.summary.warnings.push_back("life at R = " + unreachable + " is 0: " + std::to_string(s.immediate_failures) + " of " +
+                           std::to_string(evaluated) + " evaluated samples fail at once (" + bounds +
+                           "), more than 1 - R");
+  }
 }
 
 }  // namespace
@@ -51,7 +108,7 @@ WearSample wear_sample_for(const Drive& d, const std::vector<RandomInput>& input
     const std::string& key = inputs[i].key;
     const double v = x[i];
     if (key == "contact_ratio") {
-      s.contact_ratio = v;
+      s.contact_ratio = v;  // any finite value, 0 included: out of range fails at once
     } else if (key == "wear.coefficient") {
       s.wear_coefficient_scale = v / d.wear.coefficient;
     } else if (key == "load") {
@@ -105,8 +162,22 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   const reliability::PointSet points = spec.sobol ? reliability::sobol_points(n, dim, true, seed)
                                                   : reliability::pseudo_random_points(n, dim, seed);
   out.input_values.assign(n, std::vector<double>(dim));
+  // Values outside their input's domain (life/sample_domain.hpp): the sample
+  // is not evaluated but recorded as a failed evaluation with this reason.
+  std::vector<std::string> outside(n);
+  out.outside_domain_samples.assign(dim, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t k = 0; k < dim; ++k) out.input_values[i][k] = dist[k].quantile(points.at(i, k));
+    for (std::size_t k = 0; k < dim; ++k) {
+      const double x = dist[k].quantile(points.at(i, k));
+      out.input_values[i][k] = x;
+      if (auto why = outside_input_domain(inputs[k].key, x)) {
+        ++out.outside_domain_samples[k];
+        if (outside[i].empty()) {
+          outside[i] = "sampled " + inputs[k].key + " " + (std::isfinite(x) ? num(x) + " " : "") + *why +
+                       ": not a drive, excluded";
+        }
+      }
+    }
   }
   unsigned threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
@@ -117,17 +188,26 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
 
-  // One input: the probabilities [qa, qb] of the inputs that do not fail at
-  // once. A sampled contact ratio outside [max(1, [eps]), eps_max] fails at
-  // once (life 0): R(t) and the life at R count it as failed at t = 0
-  // (seed 004's R = P([eps] <= eps <= eps_max)).
-  double qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
-  if (dim == 1 && inputs[0].key == "contact_ratio") {
+  // One input, in the probabilities of its quantiles:
+  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
+  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
+  //    summary: R(t) and the life at R are conditional on a valid sample.
+  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
+  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
+  //    R(t) and the life at R count it as failed at t = 0 (seed 004's
+  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
+  double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
+  const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
+  if (positive_input) {
+    v0 = std::clamp(dist[0].cdf(0.0), 0.0, 1.0);
+    qa = v0;
+  } else if (dim == 1 && inputs[0].key == "contact_ratio") {
     xa = std::max(1.0, drive.wear.min_contact_ratio);
     xb = model.max_contact_ratio();
     qa = dist[0].cdf(xa);
-    qb = dist[0].cdf(xb);
+    qb = std::max(qa, dist[0].cdf(xb));
   }
+  const double valid_probability = 1.0 - v0;
 
   // The life table (one input): nodes over the [1e-9, 1 - 1e-9] quantiles
   // of the input (clipped to [xa, xb]), so that it serves the samples and the
@@ -141,14 +221,16 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     tr.not_used = "life_table option off";
   } else {
     constexpr double kTail = 1e-9;
-    const double ql = std::max(qa, kTail), qh = std::min(qb, 1.0 - kTail);
+    // A positive input's lowest node stays above 0 (the value at v0 is 0).
+    const double ql = std::max(qa, kTail) + (positive_input && v0 > 0 ? kTail : 0.0);
+    const double qh = std::min(qb, 1.0 - kTail);
     // Quantiles only strictly inside (0, 1): a scatter wholly outside the
     // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
     const bool inside = qh > ql;
     const double lo = inside ? std::max(xa, dist[0].quantile(ql)) : 0.0;
     const double hi = inside ? std::min(xb, dist[0].quantile(qh)) : 0.0;
     if (!inside || !(hi > lo)) {
-      tr.not_used = "almost every sample fails at once";
+      tr.not_used = "almost every sample fails at once or lies outside the input's domain";
     } else {
       reliability::FunctionTableOptions to;
       to.initial_nodes = opt.life_table_nodes;
@@ -182,6 +264,8 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   std::atomic<std::size_t> interpolated{0};
   out.lives = reliability::evaluate_samples(n, threads, [&](std::size_t i) {
+    if (opt.progress) opt.progress->tick();
+    if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
     double years;
     const double x = out.input_values[i][0];
     if (table && table->covers(x)) {
@@ -194,7 +278,6 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       out.criteria[i] = r.criterion;
       years = r.life_years;
     }
-    if (opt.progress) opt.progress->tick();
     return years * kSecondsPerYear;
   });
   tr.samples_interpolated = table ? interpolated.load() : 0;
@@ -209,7 +292,16 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   req.bootstrap_replicates = opt.bootstrap_replicates;
   req.seed = seed;
   req.threads = threads;
-  out.summary = reliability::summarize_lives(out.lives, req);
+  const std::size_t evaluated = static_cast<std::size_t>(
+      std::count_if(out.lives.begin(), out.lives.end(), [](const reliability::SampleResult& s) { return s.ok(); }));
+  if (evaluated > 0) {
+    out.summary = reliability::summarize_lives(out.lives, req);
+  } else {
+    // Nothing to summarize (summarize_lives rejects an empty sample): the
+    // counts only, no R(t) and no life at R.
+    out.summary.samples_total = n;
+    out.summary.failed_evaluations = n;
+  }
 
   // Exact results for one monotone input (issue 3: "the life at R is exact
   // from that input's quantile").
@@ -218,10 +310,13 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     const reliability::Distribution& d0 = dist[0];
     auto life_at_q = [&](double q) { return life_of(d0.quantile(q)).life_years; };
     ExactReliability& ex = out.exact;
-    ex.available = true;
+    ex.available = valid_probability > 0;  // else every sample lies outside the domain
     ex.input = inputs[0].key;
-    ex.failed_at_start = qa + (1.0 - qb);
-    if (qb - qa > 1e-12) {
+    ex.outside_domain = v0;
+    ex.failed_at_start = ex.available ? std::clamp(1.0 - (qb - qa) / valid_probability, 0.0, 1.0) : 0.0;
+    if (!ex.available) {
+      // no life at R and no R(t) from the exact path
+    } else if (qb - qa > 1e-12) {
       bool increasing = true;
       ex.monotone_verified = table && table->monotone(&increasing);
       if (ex.monotone_verified) {
@@ -231,11 +326,11 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
         ex.model_evaluations += 2;
         ex.life_increases = l2 >= l1;
       }
-      // life at R: P(life > t_R) = R, one model life at the quantile. An R
-      // above the probability of starting inside the bounds cannot be
-      // reached: life 0.
+      // life at R: P(life > t_R | valid) = R, one model life at the
+      // quantile. An R above the probability of starting inside the bounds
+      // cannot be reached: life 0.
       for (double R : spec.reliabilities) {
-        const double q = ex.life_increases ? qb - R : qa + R;
+        const double q = ex.life_increases ? qb - R * valid_probability : qa + R * valid_probability;
         if (q < qa || q > qb) {
           ex.life_at_R_years.push_back(0.0);
         } else {
@@ -245,7 +340,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       }
       // R(t): the probability q* in [qa, qb] where the life crosses t.
       const bool up = ex.life_increases;
-      auto R_of_q = [&](double q) { return std::clamp(up ? qb - q : q - qa, 0.0, 1.0); };
+      auto R_of_q = [&](double q) { return std::clamp((up ? qb - q : q - qa) / valid_probability, 0.0, 1.0); };
       ex.R_at_times.assign(spec.times.size(), 0.0);
       std::vector<int> evaluations(spec.times.size(), 0);
       if (ex.monotone_verified) {
@@ -310,6 +405,8 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   }
   out.exact_ms = ms_since(t_exact);
   out.fit_ms = ms_since(t0);
+
+  failed_sample_warnings(drive, model, out);
 
   const double nominal_years = out.nominal.life_years;
   for (std::size_t k = 0; k < out.exact.life_at_R_years.size() && k < spec.reliabilities.size(); ++k) {

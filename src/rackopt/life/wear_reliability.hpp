@@ -5,8 +5,11 @@
 //
 // Determinism: sample i's inputs depend only on (reliability.seed, i) and the
 // lives are stored by index, so the result is the same on any thread count.
-// A sample the model rejects (e.g. a contact ratio below the allowed one)
-// fails at once with life 0 and is counted, never a crash.
+// A sampled contact ratio outside [max(1, [eps]), eps_max] fails at once with
+// life 0 and is counted in R(t); a sampled value outside its input's domain
+// (not finite, or <= 0 for a load, coefficient or hardness) is a failed
+// evaluation, excluded and counted (life/sample_domain.hpp). Neither is a
+// crash, and neither gives the nominal life.
 //
 // Example:
 //   Drive d = load_problem("problems/ship_lift.yaml");
@@ -80,7 +83,9 @@ struct ExactReliability {
   int model_evaluations = 0;            // model lives spent on the exact map
   std::string input;                    // the random input's key
   bool life_increases = true;           // with the input
-  double failed_at_start = 0;           // probability of a sample outside [max(1, [eps]), eps_max] (life 0)
+  double failed_at_start = 0;           // probability of a valid sample outside [max(1, [eps]), eps_max] (life 0)
+  double outside_domain = 0;            // probability of a value outside the input's domain (<= 0 for a
+                                        // positive input): excluded, R is conditional on a valid sample
   std::vector<double> life_at_R_years;  // for reliability.reliabilities
   std::vector<double> R_at_times;       // for reliability.times
 };
@@ -91,6 +96,14 @@ struct WearReliabilityResult {
   std::vector<std::vector<double>> input_values;  // [sample][input], SI
   std::vector<reliability::SampleResult> lives; // value = life [s]
   std::vector<std::string> criteria;            // failure criterion per sample ("" when failed to evaluate)
+  // Per input: samples whose value lies outside the input's domain
+  // (life/sample_domain.hpp); those samples are failed evaluations.
+  std::vector<std::size_t> outside_domain_samples;
+  // "" without random inputs; "ok"; "every_sample_fails_at_once" (every
+  // evaluated sample has life 0: the life at every R is 0, R(t) = 0);
+  // "no_valid_sample" (no sample could be evaluated: the summary has no
+  // R(t) and no life at R, and the exact path is unavailable).
+  std::string status;
   reliability::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
   ExactReliability exact;
   LifeTableReport table;

@@ -261,6 +261,15 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       const WearReliabilityResult r = run_wear_reliability(d, ro);
       m.wear_slot.value = r.nominal;
       for (const std::string& w : r.warnings) add_warning(out, w);  // a life at R above the nominal life
+      // No sample could be evaluated (every value outside its input's
+      // domain): no life at R, the metric fails with the cause.
+      if (!inputs.empty() && r.status == "no_valid_sample" && !(exact && r.exact.available)) {
+        throw DesignError("no_valid_reliability_sample",
+                          r.summary.warnings.empty() ? std::string("no reliability sample could be evaluated")
+                                                     : r.summary.warnings.back());
+      }
+      const std::string all_fail =
+          r.status == "every_sample_fails_at_once" ? " (every sample fails at once: no life at any R)" : "";
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
         if (inputs.empty()) {
           rel.life_s.push_back(r.nominal.life_years * kSecondsPerYear);
@@ -268,7 +277,9 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
         } else if (exact && r.exact.available) {
           rel.life_s.push_back(r.exact.life_at_R_years.at(k) * kSecondsPerYear);
           rel.remark.push_back("exact quantile of " + r.exact.input + " (life " +
-                               (r.exact.life_increases ? "increases" : "decreases") + " with it)");
+                               (r.exact.life_increases ? "increases" : "decreases") + " with it)" +
+                               (r.exact.failed_at_start >= 1.0 ? " (every sample fails at once: no life at any R)"
+                                                                : ""));
         } else {
           const reliability::LifeAtReliability& la = r.summary.life.at(k);
           const std::string n = std::to_string(r.summary.samples_total);
@@ -280,7 +291,8 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
                                  (r.summary.chosen_accepted ? "" : " (no candidate passed the KS test)"));
           } else {
             rel.life_s.push_back(la.empirical.estimate);
-            rel.remark.push_back("Monte Carlo, " + n + " samples, empirical quantile (no distribution could be fitted)");
+            rel.remark.push_back("Monte Carlo, " + n + " samples, empirical quantile (no distribution could be fitted)" +
+                                 all_fail);
           }
         }
       }

@@ -65,7 +65,9 @@ std::string life_samples_csv(const WearReliabilityResult& r) {
   out += ",life_years,status,criterion,message\n";
   for (std::size_t i = 0; i < r.lives.size(); ++i) {
     out += std::to_string(i);
-    for (double x : r.input_values[i]) out += "," + g(x);
+    // A value outside its input's domain that is not even finite (an
+    // overflowing quantile) is left empty: the status and message say why.
+    for (double x : r.input_values[i]) out += "," + (std::isfinite(x) ? g(x) : std::string(""));
     const auto& s = r.lives[i];
     std::string msg = s.message;
     std::replace(msg.begin(), msg.end(), ',', ';');
@@ -205,6 +207,9 @@ std::string wear_summary(const Drive& d, const WearReliabilityResult& r) {
       if (t.fit) o << g(*t.fit, "%.4f") << " (fit), ";
       o << g(t.empirical, "%.4f") << " (empirical)\n";
     }
+    if (s.life.empty() && !d.reliability.reliabilities.empty()) {
+      o << "    life at R: none (no sample could be evaluated)\n";
+    }
     if (r.exact.available) {
       o << "    exact (one monotone random input, " << r.exact.input << "):";
       for (std::size_t i = 0; i < r.exact.life_at_R_years.size(); ++i) {
@@ -236,6 +241,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("contact_ratio_final").value(n.final_contact_ratio);
   const reliability::ReliabilitySummary& s = r.summary;
   j.key("samples").value(static_cast<long>(r.lives.size()));
+  if (!r.status.empty()) j.key("status").value(r.status);
   j.key("seed").value(static_cast<long>(r.seed_used));
   j.key("failed_evaluations").value(static_cast<long>(s.failed_evaluations));
   j.key("immediate_failures").value(static_cast<long>(s.immediate_failures));
@@ -304,6 +310,8 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
     j.key("input").value(r.exact.input);
     // Probability of a sample outside [max(1, [eps]), eps_max]: fails at t = 0.
     j.key("failed_at_start").value(r.exact.failed_at_start);
+    // Probability of a value outside the input's domain (excluded: R is conditional on a valid sample).
+    j.key("outside_domain").value(r.exact.outside_domain);
     j.key("life_at_R").begin_object();
     for (std::size_t i = 0; i < r.exact.life_at_R_years.size(); ++i) {
       j.key(g(d.reliability.reliabilities[i], "%g")).value(r.exact.life_at_R_years[i]);

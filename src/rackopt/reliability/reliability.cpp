@@ -138,9 +138,9 @@ ReliabilitySummary summarize_lives(std::span<const double> lives,
                            " samples failed to evaluate and are excluded");
   const double p0 = static_cast<double>(out.immediate_failures) / static_cast<double>(finite.size());
   if (out.immediate_failures > 0)
-    out.warnings.push_back(std::to_string(out.immediate_failures) +
-                           " samples fail at once (life 0): fitted R(t) is scaled by " +
-                           std::to_string(1.0 - p0));
+    out.warnings.push_back(std::to_string(out.immediate_failures) + " samples fail at once (life 0)" +
+                           (positive.empty() ? std::string()
+                                             : ": fitted R(t) is scaled by " + std::to_string(1.0 - p0)));
 
   // Life at R of a positive-life fit S, with the immediate failures: (1-p0) S(t) = R.
   auto fit_life = [&](const Distribution& d, double r) {
@@ -192,7 +192,10 @@ ReliabilitySummary summarize_lives(std::span<const double> lives,
     }
     if (pass == 0 && out.chosen >= 0) out.chosen_accepted = true;
   }
-  if (out.chosen < 0) {
+  if (out.chosen < 0 && positive.empty()) {
+    out.warnings.push_back("no distribution could be fitted: no sample has a positive life (every one fails at "
+                           "once); empirical results only");
+  } else if (out.chosen < 0) {
     out.warnings.push_back("no distribution could be fitted (" + out.candidates.front().error +
                            "): empirical results only");
   } else if (!out.chosen_accepted) {

@@ -541,7 +541,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           if (spec.metric_options.bootstrap_replicates > 0)
             wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
           result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
-        } catch (const DesignError& e) {
+        } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
           status = "all_failed";
           result.solver_message = std::string("wear reliability: ") + e.what();
         }

@@ -559,12 +559,12 @@ struct WearModel::Impl {
   // is out of range.
   bool sample_path(const WearSample& smp, double& s_start, double& eps, double& clearance, std::string& criterion,
                    std::string& why) const {
-    if (smp.contact_ratio == 0) {
+    if (!smp.contact_ratio) {
       s_start = s_start_nom;
       eps = eps_nom;
       clearance = drive.mounting.clearance;
     } else {
-      eps = smp.contact_ratio;
+      eps = *smp.contact_ratio;
       s_start = s_end - eps * pb;
       clearance = (s_start - sP) * sa - datum_shift;
     }
@@ -599,7 +599,7 @@ struct WearModel::Impl {
     pos(s.wear_coefficient_scale, "sample.wear_coefficient_scale");
     pos(s.force_scale, "sample.force_scale");
     pos(s.surface_hardness_scale, "sample.surface_hardness_scale");
-    if (!std::isfinite(s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
+    if (s.contact_ratio && !std::isfinite(*s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
   }
 
   WearLifeResult life(const WearSample& smp) const;

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,8 @@ struct WearSample {
   double wear_coefficient_scale = 1;  // multiplies wear.coefficient (> 0)
   double force_scale = 1;             // multiplies load.force (> 0)
   double surface_hardness_scale = 1;  // multiplies both members' whole hardness profiles (> 0)
-  // 0 = nominal. Otherwise the contact ratio the sample starts from: the path
+  // Empty = nominal. Otherwise the contact ratio the sample starts from (any
+  // finite value, 0 included: "not sampled" is only the empty optional): the path
   // keeps its pinion-tip end s_end and starts at s_end - eps p_b, i.e. the
   // rack datum sits at the clearance that puts the rack tip there
   // (physics.md 7.1-7.2: Delta = (eps_nominal - eps) p_b sin a0 for a start
@@ -45,7 +47,7 @@ struct WearSample {
   // contact ratio this pair can have (zero clearance, interference limits) it
   // fails at once with "contact_ratio_above_max" (seed 004 eq. 14 corrected,
   // physics.md 12.1: reliability needs [eps] <= eps <= eps_max).
-  double contact_ratio = 0;
+  std::optional<double> contact_ratio;
 };
 
 // Wear depth along one member's active flank.
