@@ -196,7 +196,9 @@ TEST(FailedSamples, EveryContactRatioOutOfRangeIsAStatusNotAnError) {
     // Below 1 the normal's upper tail keeps a probability of 3e-12 inside.
     EXPECT_LE(r.exact.failed_at_start, 1.0) << variant;
     EXPECT_NEAR(r.exact.failed_at_start, 1.0, 1e-9) << variant;
-    if (variant == 2) EXPECT_EQ(r.exact.failed_at_start, 1.0);
+    if (variant == 2) {
+      EXPECT_EQ(r.exact.failed_at_start, 1.0);
+    }
     for (double t : r.exact.life_at_R_years) EXPECT_EQ(t, 0.0);
     for (double R : r.exact.R_at_times) EXPECT_NEAR(R, 0.0, 1e-9);
     for (const auto& la : r.summary.life) EXPECT_EQ(la.empirical.estimate, 0.0);

@@ -423,3 +423,49 @@ TEST(EvaluateMetrics, AnImpossibleGeometryIsTheCauseNotTheWearMetric) {
 
 }  // namespace
 }  // namespace rackopt::metrics
+
+namespace rackopt::metrics {
+namespace {
+
+// Failed samples of the life at R (docs/models/reliability.md, "Failed
+// samples"). A hardness of cv 0.5 reaches below 0 at the R = 0.99 quantile:
+// the metric is the life conditional on a positive hardness (it threw an
+// InputError out of evaluate_metrics). A scatter with no valid sample at all
+// is a failed metric with its code (an infeasible design), not an exception.
+TEST(EvaluateMetrics, WearLifeAtRWithFailedSamplesIsAValueOrAFailureNeverAnException) {
+  Drive d = problem("ship_lift");
+  d.wear.update_profile = false;
+  RandomInput h;
+  h.key = "surface_hardness";
+  h.distribution = RandomInput::Distribution::kNormal;
+  h.cv = 0.5;
+  d.reliability.inputs = {h};
+  MetricValues v;
+  ASSERT_NO_THROW(v = eval(d, {"wear_life_at_R(0.99)", "wear_life_at_R(0.9)"}));
+  ASSERT_TRUE(v.all_ok()) << v.first_failure()->message;
+  EXPECT_GT(v.values[0].value, 0.0);
+  EXPECT_LT(v.values[0].value, v.values[1].value);
+  MetricOptions mc;
+  mc.exact_quantile = false;
+  mc.reliability_samples = 200;
+  ASSERT_NO_THROW(v = eval(d, {"wear_life_at_R(0.99)"}, mc));
+  ASSERT_TRUE(v.all_ok()) << v.first_failure()->message;
+  EXPECT_TRUE(std::isfinite(v.values[0].value));
+
+  h.absolute = true;
+  h.a = -1e9;  // every sampled hardness negative (the loader refuses this; code can build it)
+  h.b = 1e6;
+  d.reliability.inputs = {h};
+  for (bool exact : {true, false}) {
+    MetricOptions o;
+    o.exact_quantile = exact;
+    o.reliability_samples = 20;
+    ASSERT_NO_THROW(v = eval(d, {"wear_life_at_R(0.9)"}, o)) << exact;
+    ASSERT_FALSE(v.values[0].ok) << exact;
+    EXPECT_EQ(v.values[0].error_code, "no_valid_reliability_sample") << exact;
+    EXPECT_NE(v.values[0].message.find("no life at reliability R"), std::string::npos) << v.values[0].message;
+  }
+}
+
+}  // namespace
+}  // namespace rackopt::metrics
