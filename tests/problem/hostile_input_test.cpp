@@ -227,7 +227,7 @@ TEST(Plausibility, TinyPositiveValuesAreRefusedAtTheirKey) {
       {{"rack.body_height=1e-300 mm"}, "rack.body_height", "0.1 mm <= body_height"},
       {{"rack.body_height=", "rack.section={area: 3600 mm^2, second_moment: 5e-324 m^4, neutral_axis_depth: 40 mm}"},
        "rack.section.second_moment", "<= second_moment"},
-      {{"materials.steel={E: 5e-324 Pa, nu: 0.3}"}, "materials.steel.E", "0.1 GPa <= E <= 1200 GPa"},
+      {{"materials.steel={E: 5e-324 Pa, nu: 0.3}"}, "materials.steel.E", "4.94066e-333 GPa is out of range; allowed: 0.1 GPa <= E <= 1200 GPa"},
       {{"pinion.face_width=1e-200 mm"}, "pinion.face_width", "0.1 mm <= face_width"},
       {{"rack.span=1e-9 m"}, "rack.span", "1 mm <= span"},
       {{"load.force=1e-300 N"}, "load.force", "<= force"},
@@ -284,6 +284,7 @@ TEST(Messages, HugeLengthIsPrintedNotInf) {
   EXPECT_TRUE(contains(e.message(), "1e+311 mm is out of range")) << e.what();
   EXPECT_FALSE(contains(e.message(), "inf")) << e.what();
   EXPECT_EQ(format_length_mm(1e308), "1e+311 mm");
+  EXPECT_EQ(format_quantity(5e-324, QuantityKind::kModulus), "4.94066e-333 GPa");
   EXPECT_EQ(format_quantity(std::numeric_limits<double>::infinity(), QuantityKind::kLength), "inf mm");
 }
 

@@ -395,9 +395,10 @@ std::string format_quantity(double value_si, QuantityKind kind, std::string_view
   const double factor = chosen->si_per_unit;
   const std::string canonical = chosen->name;
   const double in_unit = value_si / factor;
-  if (std::isfinite(value_si) && !std::isfinite(in_unit)) {
-    // 1e308 m is 1e311 mm, beyond a double: divide in long double (x86-64
-    // and AArch64 Linux: exponent range to 1e4932) rather than print "inf mm".
+  if (std::isfinite(value_si) && value_si != 0 && !std::isnormal(in_unit)) {
+    // 1e308 m is 1e311 mm, beyond a double, and 5e-324 Pa is 5e-333 GPa,
+    // below one: divide in long double (x86-64 and AArch64 Linux: exponent
+    // range to 1e+-4932) rather than print "inf mm" or "0 GPa".
     if (significant_digits < 1) significant_digits = 1;
     if (significant_digits > 17) significant_digits = 17;
     char buffer[64];

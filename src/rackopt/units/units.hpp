@@ -86,7 +86,8 @@ int parse_count(std::string_view text, const SourceMark& where = {}, const std::
 // kind's default unit). parse_quantity(format_quantity(v, k), k) == v up to
 // the printed precision. Non-finite values print as "nan"/"inf" (the formatter
 // is for output; it never throws for a value); a finite value whose converted
-// number exceeds a double (1e308 m in mm) prints exactly ("1e+311 mm").
+// number leaves the range of a double prints exactly ("1e+311 mm" for 1e308 m,
+// "5e-333 GPa" for 5e-324 Pa), never as inf or 0.
 std::string format_quantity(double value_si, QuantityKind kind, std::string_view unit = {},
                             int significant_digits = 6);
 
