@@ -68,7 +68,8 @@ case "$cmd" in
     mkdir -p build-fuzz/corpus build-fuzz/artifacts
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       ./build-fuzz/rackopt_input_fuzzer -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 \
-        -timeout=10 -artifact_prefix=build-fuzz/artifacts/ build-fuzz/corpus problems studies </dev/null ;;
+        -timeout=10 -dict=tests/fuzz/input.dict -artifact_prefix=build-fuzz/artifacts/ \
+        build-fuzz/corpus problems studies </dev/null ;;
   *)
     echo "usage: ./dev.sh demo|test [--sanitize]|build|fuzz [SECONDS]" >&2; exit 2 ;;
 esac

@@ -21,7 +21,9 @@ const char* const kSmallProblem =
 constexpr std::size_t kMaxSetLines = 8;
 
 void require_finite(double v, const char* what) {
-  if (!std::isfinite(v)) throw std::logic_error(std::string("non-finite ") + what + " from a drive the loader accepted");
+  if (!std::isfinite(v)) {
+    throw std::logic_error(std::string("non-finite ") + what + " from a drive the loader accepted");
+  }
 }
 
 void exercise_geometry(const Drive& drive) {
