@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "rackopt/core/drive.hpp"
 
 namespace rackopt::cli {
 namespace {
@@ -41,7 +42,7 @@ Args parse_args(int argc, char** argv) {
     } else if (s.rfind("--out=", 0) == 0) {
       a.out_dir = s.substr(6);
     } else if (s == "--samples") {
-      a.samples = parse_whole(s, need_value(s), 1, 10000000);
+      a.samples = parse_whole(s, need_value(s), 1, kMaxReliabilitySamples);  // as reliability.samples
     } else if (s == "--seed") {
       a.seed = parse_whole(s, need_value(s), 0, 2147483647L);
     } else if (s == "--threads") {

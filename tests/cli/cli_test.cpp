@@ -163,6 +163,22 @@ TEST(Cli, ImpossibleDesignExitsTwoWithCode) {
   EXPECT_EQ(j["error"].get<std::string>().rfind("design:", 0), 0u);
 }
 
+// --samples has the limit of reliability.samples (kMaxReliabilitySamples), so
+// the command line cannot ask for more than a problem file may.
+TEST(Cli, SamplesLimitIsTheProblemFilesLimit) {
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI +
+                          "' wear problems/ship_lift.yaml --samples 1000001 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string err;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
+  const int status = pclose(p);
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_NE(err.find("--samples needs a whole number in 1..1000000"), std::string::npos) << err;
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(run("").code, 2);
   EXPECT_EQ(run("frobnicate x.yaml").code, 2);

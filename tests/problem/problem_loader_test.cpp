@@ -320,15 +320,15 @@ TEST(Errors, OutOfRangeStatesTheRangeWithUnits) {
                {"pinion.pressure_angle=50 deg"});
   std::string text = kMinimal;
   text.replace(text.find("50 mm"), 5, "-5 mm");
-  expect_error(text, {4, 15, "pinion.face_width", "-5 mm is out of range; allowed: 0 mm < face_width <= 10000 mm"});
+  expect_error(text, {4, 15, "pinion.face_width", "-5 mm is out of range; allowed: 0.1 mm <= face_width <= 10000 mm"});
   expect_error(std::string(kMinimal) + "materials: {steel: {E: 210 GPa, nu: 0.5}}\n",
                {10, 37, "materials.steel.nu", "0.5 is out of range; allowed: 0 <= nu < 0.5"});
   // Derived limit: the bore must lie inside the root circle r_f = 87.5 mm.
   expect_error(kMinimal, {0, 0, "pinion.bore_radius", "(the root radius r_f", "<command line>"},
                {"pinion.bore_radius=90 mm"});
-  // Clearance: -0.25 module = -2.5 mm at m = 10 mm.
-  expect_error(kMinimal, {0, 0, "mounting.clearance", "allowed: -2.5 mm <= clearance <= 10 mm", "<command line>"},
-               {"mounting.clearance=-3 mm"});
+  // Clearance: 0 (zero backlash) .. 1 module = 10 mm at m = 10 mm.
+  expect_error(kMinimal, {0, 0, "mounting.clearance", "allowed: 0 mm <= clearance <= 10 mm", "<command line>"},
+               {"mounting.clearance=11 mm"});
   // Pinion tooth index 0..z-1.
   expect_error(kMinimal, {0, 0, "faults[0].tooth", "allowed: 0 <= tooth <= 19", "<command line>"},
                {"faults[0]={type: spall, tooth: 20, start: 1, length: 2, width: 3, depth: 0.4}"});

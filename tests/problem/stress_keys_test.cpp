@@ -120,7 +120,7 @@ TEST(StressKeys, ErrorsPointAtTheValue) {
   expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_bending: 430}\n" + std::string(kBase),
                {2, 51, "materials.steel.allowable_bending", "a bare number means GPa: write e.g. 430 MPa"});
   expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 0 MPa}\n" + std::string(kBase),
-               {2, 51, "materials.steel.allowable_contact", "0 GPa < allowable_contact <= 5 GPa"});
+               {2, 51, "materials.steel.allowable_contact", "0.001 GPa <= allowable_contact <= 5 GPa"});
   expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 1200 mm}\n" + std::string(kBase),
                {2, 51, "materials.steel.allowable_contact", "a length but a modulus is expected"});
   // Load factors below 1 are refused, not warned about.
@@ -135,7 +135,7 @@ TEST(StressKeys, ErrorsPointAtTheValue) {
       "pinion: {teeth: 20, module: 10 mm, face_width: 50 mm}\n"
       "rack: {body_height: 80 mm, span: 2 m, root_radius: -1 mm}\n"
       "load: {force: 10 kN}\n",
-      {2, 52, "rack.root_radius", "0 mm <= root_radius <= 1000 mm (0 = the pinion cutter tip radius)"});
+      {2, 52, "rack.root_radius", "0.001 mm <= root_radius <= 1000 mm (0 = the pinion cutter tip radius)"});
 }
 
 TEST(StressKeys, UnknownKeysSuggestTheNewOnes) {

@@ -396,7 +396,7 @@ TEST(WearErrors, TimesListsAndUnits) {
   expect_error(kWear +
                    "reliability:\n"                       // 13
                    "  times: [40 yr, -5 yr]\n",           // 14, "-5 yr" at column 18
-               {14, 18, "reliability.times[1]", "allowed: 0 yr < times"});
+               {14, 18, "reliability.times[1]", "allowed: 1e-06 yr <= times"});
 }
 
 TEST(WearKeys, LifeAtRFidelityKnobs) {
@@ -515,7 +515,7 @@ TEST(WearErrors, WearRangesAndCrossChecks) {
   expect_error(kWear + "duty:\n  pinion_meshes_per_year: 100\n",
                {14, 3, "duty.rack_meshes_per_year", "required key 'rack_meshes_per_year' is missing"});
   expect_error(kWear + "duty:\n  rack_meshes_per_year: 0\n",
-               {14, 25, "duty.rack_meshes_per_year", "0 1/yr is out of range; allowed: 0 1/yr < rack_meshes_per_year"});
+               {14, 25, "duty.rack_meshes_per_year", "0 1/yr is out of range; allowed: 0.001 1/yr <= rack_meshes_per_year"});
   expect_error(kWear + "reliability:\n  sampling: halton\n",
                {14, 13, "reliability.sampling", "allowed: pseudo | sobol"});
   expect_error(kWear + "reliability:\n  ks_level: 0.9\n", {14, 13, "reliability.ks_level", "ks_level <= 0.5"});

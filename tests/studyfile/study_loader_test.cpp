@@ -153,7 +153,7 @@ TEST(StudyLoader, ShorthandBoundsAndUnits) {
   const StudySpec s = load(kHead +
                            "variables:\n"
                            "  rack.span: [120 cm, 3 m]\n"
-                           "  mounting.clearance: [-1, 2 mm]\n"
+                           "  mounting.clearance: [1, 2 mm]\n"
                            "  pinion.profile_shift: [-0.2, 0.4]\n"
                            "objectives: [stiffness_fluctuation]\n");
   ASSERT_EQ(s.variables.size(), 3u);
@@ -161,7 +161,7 @@ TEST(StudyLoader, ShorthandBoundsAndUnits) {
   EXPECT_DOUBLE_EQ(s.variables[0].upper, 3.0);
   EXPECT_EQ(s.variables[0].unit, "cm");  // the unit of the lower bound
   EXPECT_FALSE(s.variables[0].start.has_value());
-  EXPECT_DOUBLE_EQ(s.variables[1].lower, -1e-3);  // bare length: mm
+  EXPECT_DOUBLE_EQ(s.variables[1].lower, 1e-3);  // bare length: mm
   EXPECT_EQ(s.variables[1].unit, "mm");
   EXPECT_EQ(s.variables[2].kind, QuantityKind::kDimensionless);
   EXPECT_EQ(s.variables[2].unit, "");

@@ -256,6 +256,12 @@ struct RandomInput {
   double cv = 0;  // relative normal only: coefficient of variation (> 0 replaces b)
 };
 
+// Monte Carlo samples of one reliability run, whoever asks for them
+// (reliability.samples, a study's metric_options.reliability_samples,
+// `rackopt wear --samples`): 1e6 samples resolve a 1e-4 failure probability
+// to about 1 %, and the run keeps every sample's life in memory.
+constexpr int kMaxReliabilitySamples = 1000000;
+
 struct ReliabilitySpec {
   std::vector<RandomInput> inputs;
   int samples = 1000;

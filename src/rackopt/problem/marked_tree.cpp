@@ -1,9 +1,10 @@
 #include "rackopt/problem/marked_tree.hpp"
 
-#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cctype>
+
+#include "rackopt/problem/bounded_yaml.hpp"
 
 namespace rackopt {
 
@@ -166,31 +167,17 @@ std::string path_prefix(const std::vector<PathStep>& steps, std::size_t count) {
 }  // namespace
 
 MarkedNode parse_marked_yaml(const std::string& text, const std::string& file, bool from_command_line) {
-  std::vector<YAML::Node> documents;
-  try {
-    documents = YAML::LoadAll(text);
-  } catch (const YAML::DeepRecursion& e) {
-    // yaml-cpp's own message for this reads "bad file": say what happened.
-    throw InputError(from_command_line ? SourceMark{file, 0, 0} : SourceMark{file, e.mark.line + 1, e.mark.column + 1},
-                     "", "nesting deeper than " + std::to_string(e.depth()) + " levels (yaml-cpp's limit)");
-  } catch (const YAML::Exception& e) {
-    const SourceMark where = (from_command_line || e.mark.line < 0)
-                                 ? SourceMark{file, 0, 0}
-                                 : SourceMark{file, e.mark.line + 1, e.mark.column + 1};
-    throw InputError(where, "", "YAML syntax error: " + e.msg);
-  }
+  const YAML::Node document = load_one_yaml_document(text, file, from_command_line);
   Converter converter{file, from_command_line, 0};
   const SourceMark start = from_command_line ? SourceMark{file, 0, 0} : SourceMark{file, 1, 1};
-  if (documents.empty()) {
+  if (!document.IsDefined() || document.IsNull()) {
     MarkedNode empty;
     empty.mark = start;
+    if (document.IsDefined()) empty.mark = converter.mark_of(document.Mark());
+    if (empty.mark.line == 0 && !from_command_line) empty.mark = start;
     return empty;
   }
-  if (documents.size() > 1) {
-    throw InputError(converter.mark_of(documents[1].Mark()), "",
-                     "more than one YAML document ('---'); a problem file holds exactly one");
-  }
-  return converter.convert(documents.front(), start, 0, "");
+  return converter.convert(document, start, 0, "");
 }
 
 std::string override_key(const std::string& assignment) {

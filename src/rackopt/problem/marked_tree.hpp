@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/problem/input_limits.hpp"
 
 namespace rackopt {
 
@@ -37,16 +38,12 @@ struct MarkedEntry {
   MarkedNode value;
 };
 
-// Limits that stop hostile or broken input long before it costs memory.
-// The problem schema nests at most 5 levels and holds a few hundred nodes.
-constexpr int kMaxTreeDepth = 32;
-constexpr int kMaxTreeNodes = 20000;
-
 // Parses YAML text into a MarkedNode. `file` is used in every mark.
-// Throws InputError (file:line:column) for: a YAML syntax error (yaml-cpp's
-// mark), nesting deeper than yaml-cpp's 500 levels (YAML::DeepRecursion) or
-// than kMaxTreeDepth, more than kMaxTreeNodes nodes after alias expansion
-// (alias fan-out, "billion laughs"), more than one document, a key that is
+// Throws InputError (file:line:column) for everything load_one_yaml_document
+// refuses (problem/bounded_yaml.hpp: text over kMaxInputBytes, syntax errors,
+// more than kMaxTreeNodes nodes or kMaxExpandedTextBytes of text after alias
+// expansion, a stray ',', more than one document), nesting deeper than
+// kMaxTreeDepth, a key that is
 // not a plain scalar, a duplicate key in one map (pointing at the second
 // occurrence and naming the first), a merge key `<<`.
 // Marks of values given on the command line have line 0 (`from_command_line`).

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "rackopt/problem/input_file.hpp"
 #include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
@@ -17,7 +18,6 @@
 namespace rackopt {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kPi = 3.14159265358979323846;
 
@@ -32,57 +32,68 @@ struct KeySpec {
   double hi;
   bool lo_open;  // true: value must be > lo (else >= lo)
   bool hi_open;  // true: value must be < hi (else <= hi)
+  bool zero_is_default = false;  // exactly 0 is accepted too: "0 = derived from other keys"
 };
+
+// Plausibility: every physical quantity has a lower bound as well as an upper
+// one, generous enough for any real drive (a watch-size module 0.05 mm to a
+// ship lift's 63 mm and beyond) but far above the tiny values that would
+// underflow in the model (a 1e-300 mm body has I = 0) or that show a unit was
+// forgotten (E: 5e-324 Pa). docs/yaml.md states each range next to its key.
+constexpr double kMinLength = 0.1e-3;  // 0.1 mm: the smallest tooth, body or face dimension
+constexpr double kMinSmallLength = 1e-6;  // 1 um: spall sizes, wear depths
 
 constexpr KeySpec kKeySpecs[] = {
     {"pinion.teeth", QuantityKind::kCount, 5, 1000, false, false},
     {"pinion.module", QuantityKind::kLength, 0.05e-3, 1.0, false, false},
     {"pinion.pressure_angle", QuantityKind::kAngle, 5 * kDeg, 45 * kDeg, false, false},
-    {"pinion.face_width", QuantityKind::kLength, 0, 10.0, true, false},
+    {"pinion.face_width", QuantityKind::kLength, kMinLength, 10.0, false, false},
     {"pinion.profile_shift", QuantityKind::kDimensionless, -2, 2, false, false},
-    {"pinion.addendum", QuantityKind::kDimensionless, 0, 3, true, false},
-    {"pinion.dedendum", QuantityKind::kDimensionless, 0, 3, true, false},
+    {"pinion.addendum", QuantityKind::kDimensionless, 0.1, 3, false, false},
+    {"pinion.dedendum", QuantityKind::kDimensionless, 0.1, 3, false, false},
     {"pinion.tip_radius", QuantityKind::kDimensionless, 0, 1, false, false},
-    {"pinion.bore_radius", QuantityKind::kLength, 0, 10.0, true, false},
+    {"pinion.bore_radius", QuantityKind::kLength, kMinLength, 10.0, false, false},
     // Profile relief (docs/yaml.md): amount along the flank normal; length a
     // multiple of the module (a length with its unit is accepted too, up to 5 m_n).
     {"pinion.tip_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
-    {"pinion.tip_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"pinion.tip_relief.length", QuantityKind::kDimensionless, 0.01, 5, false, false},
     {"pinion.root_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
-    {"pinion.root_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"pinion.root_relief.length", QuantityKind::kDimensionless, 0.01, 5, false, false},
     {"rack.tip_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
-    {"rack.tip_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
+    {"rack.tip_relief.length", QuantityKind::kDimensionless, 0.01, 5, false, false},
     {"rack.root_relief.amount", QuantityKind::kLength, 0, 10e-3, false, false},
-    {"rack.root_relief.length", QuantityKind::kDimensionless, 0, 5, true, false},
-    {"rack.addendum", QuantityKind::kDimensionless, 0, 3, true, false},
-    {"rack.dedendum", QuantityKind::kDimensionless, 0, 3, true, false},
-    {"rack.face_width", QuantityKind::kLength, 0, 10.0, true, false},
-    {"rack.body_height", QuantityKind::kLength, 0, 10.0, true, false},
-    {"rack.body_width", QuantityKind::kLength, 0, 10.0, true, false},
-    {"rack.section.area", QuantityKind::kArea, 0, kInf, true, true},
-    {"rack.section.second_moment", QuantityKind::kSecondMoment, 0, kInf, true, true},
-    {"rack.section.shear_area", QuantityKind::kArea, 0, kInf, true, true},
-    {"rack.section.neutral_axis_depth", QuantityKind::kLength, 0, 10.0, true, false},
-    {"rack.span", QuantityKind::kLength, 0, 100.0, true, false},
-    {"rack.tooth_offset", QuantityKind::kLength, 0, kInf, false, true},
+    {"rack.root_relief.length", QuantityKind::kDimensionless, 0.01, 5, false, false},
+    {"rack.addendum", QuantityKind::kDimensionless, 0.1, 3, false, false},
+    {"rack.dedendum", QuantityKind::kDimensionless, 0.1, 3, false, false},
+    {"rack.face_width", QuantityKind::kLength, kMinLength, 10.0, false, false},
+    {"rack.body_height", QuantityKind::kLength, kMinLength, 10.0, false, false},
+    {"rack.body_width", QuantityKind::kLength, kMinLength, 10.0, false, false},
+    {"rack.section.area", QuantityKind::kArea, 1e-8, 100, false, false},
+    {"rack.section.second_moment", QuantityKind::kSecondMoment, 1e-18, 1000, false, false},
+    {"rack.section.shear_area", QuantityKind::kArea, 1e-8, 100, false, false},
+    {"rack.section.neutral_axis_depth", QuantityKind::kLength, 0.01e-3, 10.0, false, false},
+    {"rack.span", QuantityKind::kLength, 1e-3, 100.0, false, false},
+    {"rack.tooth_offset", QuantityKind::kLength, 0, 100.0, false, false},
     // 0 = the cutter tip radius; a round larger than the rack space is
     // clamped by the stress model (it depends on the geometry).
-    {"rack.root_radius", QuantityKind::kLength, 0, 1.0, false, false},
-    {"mounting.clearance", QuantityKind::kLength, -kInf, kInf, true, true},
-    {"materials.*.E", QuantityKind::kModulus, 0, 2000e9, true, false},
+    {"rack.root_radius", QuantityKind::kLength, 1e-6, 1.0, false, false, true},
+    {"mounting.clearance", QuantityKind::kLength, 0, 1.0, false, false},
+    // 0.1 GPa: polyethylene; 1200 GPa: diamond.
+    {"materials.*.E", QuantityKind::kModulus, 0.1e9, 1200e9, false, false},
     {"materials.*.nu", QuantityKind::kDimensionless, 0, 0.5, false, true},
     // Permissible stresses: 5 GPa is several times any gear steel's (a
     // case-hardened sigma_HP is ~1.5 GPa); above it a unit was forgotten.
-    {"materials.*.allowable_bending", QuantityKind::kModulus, 0, 5e9, true, false},
-    {"materials.*.allowable_contact", QuantityKind::kModulus, 0, 5e9, true, false},
+    {"materials.*.allowable_bending", QuantityKind::kModulus, 1e6, 5e9, false, false},
+    {"materials.*.allowable_contact", QuantityKind::kModulus, 1e6, 5e9, false, false},
     // Metals and polymers lie in 900..23000 kg/m^3 (POM ~1400, steel 7850).
     {"materials.*.density", QuantityKind::kDensity, 500, 25000, false, false},
-    {"load.force", QuantityKind::kForce, 0, kInf, true, true},
-    {"load.torque", QuantityKind::kTorque, 0, kInf, true, true},
-    {"load.thrust", QuantityKind::kForce, 0, kInf, true, true},
+    // 1 mN (an instrument drive) .. 10 GN (ten times the largest ship lift).
+    {"load.force", QuantityKind::kForce, 1e-3, 1e10, false, false},
+    {"load.torque", QuantityKind::kTorque, 1e-6, 1e10, false, false},
+    {"load.thrust", QuantityKind::kForce, 1e-3, 1e10, false, false},
     // 50 m/s (180 km/h) is beyond any rack drive; above it a unit was forgotten.
-    {"load.speed", QuantityKind::kSpeed, 0, 50, true, false},
-    {"load.efficiency", QuantityKind::kDimensionless, 0, 1, true, false},
+    {"load.speed", QuantityKind::kSpeed, 1e-6, 50, false, false},
+    {"load.efficiency", QuantityKind::kDimensionless, 0.05, 1, false, false},
     // ISO 6336 load factors are >= 1 by definition (1 = no extra load);
     // above 10 the simplified method is meaningless.
     {"load.application_factor", QuantityKind::kDimensionless, 1, 10, false, false},
@@ -91,16 +102,16 @@ constexpr KeySpec kKeySpecs[] = {
     {"load.face_load_factor_bending", QuantityKind::kDimensionless, 1, 10, false, false},
     {"load.transverse_load_factor", QuantityKind::kDimensionless, 1, 10, false, false},
     {"faults[].tooth", QuantityKind::kCount, 0, 1e9, false, false},
-    {"faults[].start", QuantityKind::kLength, 0, kInf, false, true},
-    {"faults[].length", QuantityKind::kLength, 0, kInf, true, true},
-    {"faults[].width", QuantityKind::kLength, 0, kInf, true, true},
-    {"faults[].depth", QuantityKind::kLength, 0, kInf, true, true},
+    {"faults[].start", QuantityKind::kLength, 0, 10.0, false, false},
+    {"faults[].length", QuantityKind::kLength, kMinSmallLength, 10.0, false, false},
+    {"faults[].width", QuantityKind::kLength, kMinSmallLength, 10.0, false, false},
+    {"faults[].depth", QuantityKind::kLength, kMinSmallLength, 1.0, false, false},
     {"numerics.quadrature_order", QuantityKind::kCount, 2, 64, false, false},
     {"numerics.positions_per_period", QuantityKind::kCount, 4, 10000, false, false},
     // Wear (physics.md 10, 11). Archard K spans mild wear ~1e-8 to severe
     // ~1e-2 (10.4); 1e-20..1 leaves room for any reading of a paper's k.
     {"wear.coefficient", QuantityKind::kDimensionless, 1e-20, 1, false, false},
-    {"wear.max_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    {"wear.max_depth", QuantityKind::kLength, kMinSmallLength, 1.0, false, false},
     // Below 1 the drive loses continuous contact whatever the wear: the
     // allowable contact ratio of seed 004's criterion is at least 1.
     {"wear.min_contact_ratio", QuantityKind::kDimensionless, 1, 5, false, false},
@@ -108,27 +119,31 @@ constexpr KeySpec kKeySpecs[] = {
     {"wear.block_fraction", QuantityKind::kDimensionless, 1e-6, 0.5, false, false},
     // One schema for wear.hardness, wear.pinion_hardness, wear.rack_hardness.
     // 2000 HB is far above any steel (a file-hard surface is ~ 700 HB).
-    {"wear.hardness.surface", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
-    {"wear.hardness.core", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
-    {"wear.hardness.limit", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
-    {"wear.hardness.case_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    // 1 HB is far below any engineering polymer's indentation hardness.
+    {"wear.hardness.surface", QuantityKind::kHardness, 1 * kPaPerHB, 2000 * kPaPerHB, false, false},
+    {"wear.hardness.core", QuantityKind::kHardness, 1 * kPaPerHB, 2000 * kPaPerHB, false, false},
+    {"wear.hardness.limit", QuantityKind::kHardness, 1 * kPaPerHB, 2000 * kPaPerHB, false, false},
+    {"wear.hardness.case_depth", QuantityKind::kLength, 0.01e-3, 1.0, false, false},
     {"wear.hardness.exponent", QuantityKind::kDimensionless, 0.5, 20, false, false},
-    {"wear.hardness.valid_depth", QuantityKind::kLength, 0, 1.0, true, false},
+    {"wear.hardness.valid_depth", QuantityKind::kLength, 0.01e-3, 1.0, false, false},
     {"wear.hardness.depths[]", QuantityKind::kLength, 0, 1.0, false, false},
-    {"wear.hardness.values[]", QuantityKind::kHardness, 0, 2000 * kPaPerHB, true, false},
-    {"duty.rack_meshes_per_year", QuantityKind::kRate, 0, kInf, true, true},
-    {"duty.pinion_meshes_per_year", QuantityKind::kRate, 0, kInf, false, true},
+    {"wear.hardness.values[]", QuantityKind::kHardness, 1 * kPaPerHB, 2000 * kPaPerHB, false, false},
+    // 1e-3/yr (once a millennium) .. 1e12/yr (30 kHz day and night).
+    {"duty.rack_meshes_per_year", QuantityKind::kRate, 1e-3 / kSecondsPerYear, 1e12 / kSecondsPerYear, false, false},
+    {"duty.pinion_meshes_per_year", QuantityKind::kRate, 1e-3 / kSecondsPerYear, 1e12 / kSecondsPerYear, false, false,
+     true},
     // 1e9 m/yr is a drive running day and night at 30 m/s; a bare number is m/s.
-    {"duty.travel_per_year", QuantityKind::kSpeed, 0, 1e9 / kSecondsPerYear, true, false},
-    {"duty.strokes_per_year", QuantityKind::kRate, 0, kInf, true, true},
-    {"duty.stroke", QuantityKind::kLength, 0, 1e5, true, false},
-    {"reliability.samples", QuantityKind::kCount, 1, 1e6, false, false},
+    {"duty.travel_per_year", QuantityKind::kSpeed, 1.0 / kSecondsPerYear, 1e9 / kSecondsPerYear, false, false},
+    {"duty.strokes_per_year", QuantityKind::kRate, 1e-3 / kSecondsPerYear, 1e12 / kSecondsPerYear, false, false},
+    {"duty.stroke", QuantityKind::kLength, 1e-3, 1e5, false, false},
+    {"reliability.samples", QuantityKind::kCount, 1, kMaxReliabilitySamples, false, false},
     {"reliability.seed", QuantityKind::kCount, 0, 2e9, false, false},
     {"reliability.ks_level", QuantityKind::kDimensionless, 0.001, 0.5, false, false},
     {"reliability.bootstrap_replicates", QuantityKind::kCount, 20, 100000, false, false},
     {"reliability.life_table_tolerance", QuantityKind::kDimensionless, 1e-6, 0.05, false, false},
     {"reliability.R[]", QuantityKind::kDimensionless, 0, 1, true, true},
-    {"reliability.times[]", QuantityKind::kTime, 0, kInf, true, true},
+    // 1e-6 yr (32 s) .. a million years.
+    {"reliability.times[]", QuantityKind::kTime, 1e-6 * kSecondsPerYear, 1e6 * kSecondsPerYear, false, false},
 };
 
 const KeySpec* find_spec(std::string_view pattern) {
@@ -215,7 +230,9 @@ class Block : public MarkedMap {
       return *fallback;
     }
     const double v = parse_quantity(text->first, s.kind, text->second, child_path(key));
-    check_range(key, v, s.lo, s.hi, s.lo_open, s.hi_open, why);
+    if (s.zero_is_default && v == 0) return v;
+    check_range(key, v, s.lo, s.hi, s.lo_open, s.hi_open,
+                why.empty() && s.zero_is_default ? " (or 0 for the default)" : why);
     return v;
   }
 
@@ -226,9 +243,10 @@ class Block : public MarkedMap {
       if (!fallback) missing(key, expected_text(s.kind));
       return *fallback;
     }
-    const int v = parse_count(text->first, text->second, child_path(key));
+    // Range-checked as a double first: 2147483648 is "out of range", not an overflow.
+    const double v = parse_whole_number(text->first, text->second, child_path(key));
     check_range(key, v, s.lo, s.hi, s.lo_open, s.hi_open, "");
-    return v;
+    return static_cast<int>(v);
   }
 
   // Throws when v is outside the range; `why` explains a derived limit.
@@ -804,12 +822,14 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
 
   // --- mounting
   const Block mount(top.get("mounting"), "mounting", "mounting", top.mark(), {"clearance"});
-  drive.mounting.clearance = mount.number("clearance", 0.0);
-  // A quarter module closer is the bottom clearance of a standard tooth: any
-  // closer and the rack tip digs into the pinion root. A module apart leaves
-  // a contact ratio far below 1 for any practical tooth.
-  mount.check_range("clearance", drive.mounting.clearance, -0.25 * pin.module, pin.module, false, false,
-                    " (-0.25 x module .. +1 x module)");
+  const std::string clearance_why = " (0 = zero backlash, the teeth touch on both flanks; up to 1 x module)";
+  drive.mounting.clearance = mount.number("clearance", 0.0, clearance_why);
+  // 0 is the zero-backlash mesh: the pinion was generated by the rack's own
+  // profile, so the teeth touch on both flanks (backlash 2 clearance tan a0).
+  // Closer, the flanks would overlap: a negative clearance is impossible
+  // (build_mesh_geometry refuses it too), not a deeper mesh. A module apart
+  // leaves a contact ratio far below 1 for any practical tooth.
+  mount.check_range("clearance", drive.mounting.clearance, 0, pin.module, false, false, clearance_why);
 
   // --- load
   const Block load(top.get("load"), "load", "load", top.mark(),
@@ -1015,15 +1035,7 @@ ParsedProblem parse_problem(const std::string& text, const std::string& file, co
   return out;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(SourceMark{path, 0, 0}, "", std::string("cannot open the problem file: ") + std::strerror(errno));
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+std::string read_file(const std::string& path) { return read_input_file(path, "problem file"); }
 
 }  // namespace
 

@@ -17,6 +17,7 @@
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/design_point.hpp"
+#include "rackopt/problem/input_file.hpp"
 #include "rackopt/core/suggest.hpp"
 #include "rackopt/problem/marked_map.hpp"
 #include "rackopt/problem/marked_tree.hpp"
@@ -102,13 +103,14 @@ class Section : public MarkedMap {
   long long integer(const std::string& key, long long fallback, long long lo, long long hi) const {
     const auto t = scalar(key, "a whole number");
     if (!t) return fallback;
-    const long long v = parse_count(t->first, t->second, child_path(key));
-    if (v < lo || v > hi) {
+    // Compared as a double first: 1e30 is "out of range", not an overflow.
+    const double v = parse_whole_number(t->first, t->second, child_path(key));
+    if (v < static_cast<double>(lo) || v > static_cast<double>(hi)) {
       throw InputError(t->second, child_path(key),
-                       std::to_string(v) + " is out of range; allowed: " + std::to_string(lo) + " <= " + key +
+                       format_number(v, 17) + " is out of range; allowed: " + std::to_string(lo) + " <= " + key +
                            (hi < std::numeric_limits<int>::max() ? " <= " + std::to_string(hi) : std::string()));
     }
-    return v;
+    return static_cast<long long>(v);
   }
 
   // A plain number; `lo_open`: must be > lo (else >= lo); hi: <= hi.
@@ -486,16 +488,6 @@ std::uint64_t read_seed(const Section& s, const std::string& key, std::uint64_t 
   return v;
 }
 
-std::string read_file_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(SourceMark{path, 0, 0}, "", std::string("cannot open the study file: ") + std::strerror(errno));
-  }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 // `--set` for the two study sections whose keys are dotted problem paths
 // (variables, problem_set): "variables.rack.span.upper=3 m" addresses the
 // field `upper` of the entry "rack.span" (the longest existing entry that
@@ -808,7 +800,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
                    {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates", "cost"},
                    "{exact_quantile: on, reliability_samples: 1000}");
   spec.metric_options.exact_quantile = mo.flag("exact_quantile", spec.metric_options.exact_quantile);
-  spec.metric_options.reliability_samples = static_cast<long>(mo.integer("reliability_samples", -1, 1, 1000000));
+  spec.metric_options.reliability_samples = static_cast<long>(mo.integer("reliability_samples", -1, 1, kMaxReliabilitySamples));
   // The study seed drives every random choice, the Monte Carlo included,
   // unless the study pins the Monte Carlo seed itself.
   spec.metric_options.reliability_seed =
@@ -1107,7 +1099,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
 }
 
 StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides) {
-  const std::string text = read_file_text(path);
+  const std::string text = read_input_file(path, "study file");
   return load_study_text(text, path, fs::path(path).parent_path().string(), overrides);
 }
 

@@ -347,15 +347,25 @@ double parse_quantity(std::string_view text, QuantityKind kind, const SourceMark
   return si;
 }
 
-int parse_count(std::string_view text, const SourceMark& where, const std::string& key_path) {
+double parse_whole_number(std::string_view text, const SourceMark& where, const std::string& key_path) {
   const NumberSplit split = split_number(text, QuantityKind::kCount, where, key_path);
   unit_factor(split.rest, QuantityKind::kCount, where, key_path);  // throws on any trailing text
-  if (split.value != std::floor(split.value) || std::fabs(split.value) > 2e9) {
+  if (split.value != std::floor(split.value)) {
     throw InputError(where, key_path,
                      "'" + std::string(trim(text)) + "' is not a whole number; expected " +
                          allowed_text(QuantityKind::kCount));
   }
-  return static_cast<int>(split.value);
+  return split.value;
+}
+
+int parse_count(std::string_view text, const SourceMark& where, const std::string& key_path) {
+  constexpr double kLimit = 2e9;  // inside int's +-2147483647
+  const double v = parse_whole_number(text, where, key_path);
+  if (std::fabs(v) > kLimit) {
+    throw InputError(where, key_path,
+                     "'" + std::string(trim(text)) + "' is out of range; allowed: -2000000000 .. 2000000000");
+  }
+  return static_cast<int>(v);
 }
 
 std::string format_number(double value, int significant_digits) {
@@ -384,7 +394,19 @@ std::string format_quantity(double value_si, QuantityKind kind, std::string_view
   }
   const double factor = chosen->si_per_unit;
   const std::string canonical = chosen->name;
-  return format_number(value_si / factor, significant_digits) + " " + canonical;
+  const double in_unit = value_si / factor;
+  if (std::isfinite(value_si) && value_si != 0 && !std::isnormal(in_unit)) {
+    // 1e308 m is 1e311 mm, beyond a double, and 5e-324 Pa is 5e-333 GPa,
+    // below one: divide in long double (x86-64 and AArch64 Linux: exponent
+    // range to 1e+-4932) rather than print "inf mm" or "0 GPa".
+    if (significant_digits < 1) significant_digits = 1;
+    if (significant_digits > 17) significant_digits = 17;
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*Lg", significant_digits,
+                  static_cast<long double>(value_si) / static_cast<long double>(factor));
+    return std::string(buffer) + " " + canonical;
+  }
+  return format_number(in_unit, significant_digits) + " " + canonical;
 }
 
 std::string format_length_mm(double metres, int significant_digits) {

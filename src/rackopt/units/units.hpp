@@ -70,14 +70,24 @@ double unit_factor(std::string_view unit, QuantityKind kind, const SourceMark& w
 double parse_quantity(std::string_view text, QuantityKind kind, const SourceMark& where = {},
                       const std::string& key_path = {}, std::string_view bare_unit = {});
 
-// Parses a whole number without unit ("22", "-3", "+4"); same errors as above.
+// Parses a whole number without unit ("22", "-3", "+4", "1e12") of any
+// magnitude, returned as a double so that the caller can check it against
+// its own range before converting ("2147483648 is out of range; allowed:
+// 5 <= teeth <= 1000" rather than an overflow). Same errors as
+// parse_quantity; a fraction is "not a whole number".
+double parse_whole_number(std::string_view text, const SourceMark& where = {}, const std::string& key_path = {});
+
+// parse_whole_number limited to what an int holds safely: |n| <= 2e9 (else
+// "out of range", naming that range).
 int parse_count(std::string_view text, const SourceMark& where = {}, const std::string& key_path = {});
 
 // "<value> <unit>" with `significant_digits` significant digits (%g style,
 // no trailing zeros), the SI value converted into `unit` (default: the
 // kind's default unit). parse_quantity(format_quantity(v, k), k) == v up to
 // the printed precision. Non-finite values print as "nan"/"inf" (the formatter
-// is for output; it never throws for a value).
+// is for output; it never throws for a value); a finite value whose converted
+// number leaves the range of a double prints exactly ("1e+311 mm" for 1e308 m,
+// "5e-333 GPa" for 5e-324 Pa), never as inf or 0.
 std::string format_quantity(double value_si, QuantityKind kind, std::string_view unit = {},
                             int significant_digits = 6);
 
