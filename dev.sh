@@ -2,10 +2,11 @@
 # One entry point for newcomers and CI.
 #   ./dev.sh demo            install what is missing, build, run the default study
 #   ./dev.sh test            install what is missing, build, run the whole test suite
-#   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan (build-asan/)
+#   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan, built with clang
+#                            (build-asan/), then 60 s of the input fuzzer
 #   ./dev.sh build           install + build only
-#   ./dev.sh fuzz [SECONDS]  libFuzzer over every YAML input path for SECONDS (default 60),
-#                            clang + ASan/UBSan in build-fuzz/ (docs/input_limits.md)
+#   ./dev.sh fuzz [SECONDS]  libFuzzer over every YAML input path for SECONDS (default 600),
+#                            clang + ASan/UBSan in build-asan/ (docs/input_limits.md)
 # Re-running is fast: packages already present are not touched, builds are incremental.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
@@ -13,8 +14,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
           libgsl-dev libyaml-cpp-dev libsqlite3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox)
 
-# Only for ./dev.sh fuzz: clang and its libFuzzer runtime.
-FUZZ_PACKAGES=(clang libclang-rt-14-dev)
+# Only for the sanitizer build and ./dev.sh fuzz: clang and its libFuzzer runtime.
+SANITIZE_PACKAGES=(clang libclang-rt-14-dev)
 
 install_missing() {  # install_missing [extra packages...]
   local missing=()
@@ -37,6 +38,26 @@ build() {  # build DIR [cmake args...]
   cmake --build "$dir" -j "$JOBS" >&2
 }
 
+# The sanitizer build uses clang: it also builds the libFuzzer target, and
+# is the compiler of the fuzzer target that shares this build.
+build_sanitized() {
+  CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRACKOPT_WERROR=ON \
+    -DRACKOPT_SANITIZE=ON -DRACKOPT_FUZZ=ON -DRACKOPT_BENCHMARKS=OFF >/dev/null
+  cmake --build build-asan -j "$JOBS" ${CMAKE_TARGET:+--target "$CMAKE_TARGET"} >&2
+}
+
+# fuzz SECONDS: libFuzzer from the shipped problems and studies (read in place,
+# never copied), with a fixed seed so a CI failure repeats. New inputs go to
+# build-asan/fuzz-corpus, crashes to build-asan/fuzz-artifacts (make each a
+# file in tests/fuzz/regressions/).
+fuzz() {
+  mkdir -p build-asan/fuzz-corpus build-asan/fuzz-artifacts
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ./build-asan/rackopt_input_fuzzer -seed=1 -max_total_time="$1" -max_len=65536 -rss_limit_mb=2048 \
+      -timeout=10 -dict=tests/fuzz/input.dict -artifact_prefix=build-asan/fuzz-artifacts/ \
+      -print_final_stats=1 build-asan/fuzz-corpus problems studies </dev/null
+}
+
 cmd=${1:-demo}; shift || true
 case "$cmd" in
   build)
@@ -47,29 +68,22 @@ case "$cmd" in
   test)
     install_missing
     if [ "${1:-}" = "--sanitize" ]; then
-      build build-asan -DRACKOPT_SANITIZE=ON -DRACKOPT_BENCHMARKS=OFF
+      install_missing "${SANITIZE_PACKAGES[@]}"
+      build_sanitized
+      # The study acceptance tests re-solve whole shipped studies (minutes under
+      # ASan); the code they run is covered by the study, runner and CLI tests,
+      # and they run in the plain build (./dev.sh test).
       ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-        ctest --test-dir build-asan --output-on-failure -j "$JOBS"
+        ctest --test-dir build-asan --output-on-failure -j "$JOBS" -E '^StudyAcceptance\.'
+      fuzz 60
     else
       build build
       ctest --test-dir build --output-on-failure -j "$JOBS"
     fi ;;
   fuzz)
-    # Builds only the fuzz target (and the libraries it needs) with clang,
-    # then fuzzes for a bounded time from the shipped problems and studies
-    # (used in place, never copied). New inputs go to build-fuzz/corpus;
-    # crashes to build-fuzz/artifacts (make each a file in
-    # tests/fuzz/regressions/). A longer run: ./dev.sh fuzz 3600
-    seconds=${1:-60}
-    install_missing "${FUZZ_PACKAGES[@]}"
-    CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRACKOPT_FUZZ=ON \
-      -DRACKOPT_BENCHMARKS=OFF >/dev/null
-    cmake --build build-fuzz -j "$JOBS" --target rackopt_input_fuzzer >&2
-    mkdir -p build-fuzz/corpus build-fuzz/artifacts
-    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      ./build-fuzz/rackopt_input_fuzzer -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=2048 \
-        -timeout=10 -dict=tests/fuzz/input.dict -artifact_prefix=build-fuzz/artifacts/ \
-        build-fuzz/corpus problems studies </dev/null ;;
+    install_missing "${SANITIZE_PACKAGES[@]}"
+    CMAKE_TARGET=rackopt_input_fuzzer build_sanitized
+    fuzz "${1:-600}" ;;
   *)
     echo "usage: ./dev.sh demo|test [--sanitize]|build|fuzz [SECONDS]" >&2; exit 2 ;;
 esac

@@ -141,11 +141,6 @@ class Section : public MarkedMap {
     if (std::isfinite(hi)) allowed += " <= " + format_in(hi, kind);
     throw InputError(where, child_path(key), format_in(v, kind) + " is out of range; allowed: " + allowed);
   }
-
-  const MarkedNode* node_;
-  std::string path_;
-  SourceMark mark_;
-  std::vector<std::string> allowed_;
 };
 
 // ------------------------------------------------------------------- metrics
