@@ -9,6 +9,8 @@
 #include "cli.hpp"
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/output/atomic_file.hpp"
+#include "rackopt/output/folder_lock.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -18,6 +20,11 @@ namespace rackopt::cli {
 int cmd_wear(const Args& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const Drive drive = load_problem(a.file, a.overrides);
+  namespace fs = std::filesystem;
+  const fs::path dir = a.out_dir.empty() ? fs::path("out") / (fs::path(a.file).stem().string() + "_wear")
+                                         : fs::path(a.out_dir);
+  const FolderLock lock(dir.string());  // before the long part: a folder in use is refused at once
+  report_stale_temporaries(lock);
   WearReliabilityOptions opt = wear_reliability_options(drive);
   opt.samples = a.samples;
   opt.seed = a.seed;
@@ -28,12 +35,11 @@ int cmd_wear(const Args& a) {
     bar = std::make_unique<ProgressBar>(n, "samples");
     opt.progress = bar.get();
   }
-  const WearReliabilityResult r = run_wear_reliability(drive, opt);
-  bar.reset();  // finish the progress line before printing
+  opt.stop = [] { return stop_requested(); };
+  const WearReliabilityResult r = run_wear_reliability(drive, opt);  // throws Interrupted on Ctrl-C
+  if (bar) bar->finish(true);  // finish the progress line before printing
+  throw_if_stop_requested("wear");
 
-  namespace fs = std::filesystem;
-  const fs::path dir = a.out_dir.empty() ? fs::path("out") / (fs::path(a.file).stem().string() + "_wear")
-                                         : fs::path(a.out_dir);
   const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;
   WearFiles files;
   std::vector<std::string> warnings;
@@ -53,6 +59,7 @@ int cmd_wear(const Args& a) {
     files.histogram_png = render_plot(dir, "life_histogram.gp", "life_histogram.png", warnings);
     files.reliability_png = render_plot(dir, "reliability.gp", "reliability.png", warnings);
   }
+  throw_if_stop_requested("wear");  // the CSVs are complete; the plots were not drawn
   const double total_ms = ms_since(t0);
 
   std::string text = (drive.name.empty() ? std::string("rack drive") : drive.name) + "\n" + wear_summary(drive, r);

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/life/design_scatter.hpp"
 #include "rackopt/life/life_at_R_check.hpp"
@@ -182,6 +183,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   std::atomic<std::size_t> interpolated{0};
   out.lives = reliability::evaluate_samples(n, threads, [&](std::size_t i) {
+    if (opt.stop && opt.stop()) return std::numeric_limits<double>::quiet_NaN();  // skipped, thrown below
     double years;
     const double x = out.input_values[i][0];
     if (table && table->covers(x)) {
@@ -197,6 +199,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     if (opt.progress) opt.progress->tick();
     return years * kSecondsPerYear;
   });
+  if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
   tr.samples_interpolated = table ? interpolated.load() : 0;
   tr.samples_direct = n - tr.samples_interpolated;
   out.samples_ms = ms_since(t0);

@@ -16,6 +16,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/fidelity_settings.hpp"
@@ -540,7 +541,11 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           wo.threads = run.threads();
           if (spec.metric_options.bootstrap_replicates > 0)
             wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
+          wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
           result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
+        } catch (const Interrupted&) {
+          run.stop_requested();  // latch: the study stopped; --resume redoes the Monte Carlo
+          status = "stopped";
         } catch (const DesignError& e) {
           status = "all_failed";
           result.solver_message = std::string("wear reliability: ") + e.what();
