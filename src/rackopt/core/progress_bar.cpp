@@ -60,7 +60,13 @@ std::string format_progress_line(const ProgressState& s, int width) {
   // The detail gives way first (shortened, then dropped), then the estimate.
   if (length(detail, estimate) > room && !detail.empty()) {
     const std::size_t fixed = length("", estimate) + 2;
-    detail = fixed + 8 <= room ? detail.substr(0, room - fixed - 3) + "..." : std::string();
+    if (fixed + 8 <= room) {
+      detail.resize(room - fixed - 3);
+      while (!detail.empty() && (detail.back() == ' ' || detail.back() == ',')) detail.pop_back();
+      detail += "...";
+    } else {
+      detail.clear();
+    }
   }
   if (length(detail, estimate) > room) estimate.clear();
   std::string line = counts + (detail.empty() ? "" : ", " + detail) + ", " + time_text + estimate;
