@@ -152,6 +152,7 @@ int cmd_run(const Args& a) {
   const study::StudyReport rep = study::write_study_report(spec, result, out_dir);
 
   const std::string text = text_for_people(spec, result, rep, out_dir);
+  set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
     std::cout << rep.summary_json << "\n";

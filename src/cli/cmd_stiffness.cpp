@@ -95,6 +95,7 @@ int cmd_stiffness(const Args& a) {
   for (std::size_t i = model.warnings().size(); i < curve.warnings.size(); ++i) {
     text += "  warning: " + curve.warnings[i] + "\n";
   }
+  rackopt::set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
     std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, ripple, te, t, csv.string(), png) << "\n";

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli.hpp"
@@ -36,7 +37,11 @@ int cmd_wear(const Args& a) {
     opt.progress = bar.get();
   }
   opt.stop = [] { return stop_requested(); };
+  // Nothing is written before the analysis ends: Ctrl-C ends it at once,
+  // also in the parts that do not poll (the fit and its bootstrap).
+  std::optional<ImmediateStopScope> immediate(std::in_place);
   const WearReliabilityResult r = run_wear_reliability(drive, opt);  // throws Interrupted on Ctrl-C
+  immediate.reset();
   if (bar) bar->finish(true);  // finish the progress line before printing
   throw_if_stop_requested("wear");
 
@@ -67,6 +72,7 @@ int cmd_wear(const Args& a) {
           (r.lives.empty() ? std::string("") : ", life_samples.csv, reliability.csv, life_histogram.csv") +
           " and plots)\n";
   for (const std::string& w : warnings) text += "  warning: " + w + "\n";
+  set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
     std::cout << wear_json(drive, r, files, total_ms) << "\n";

@@ -97,7 +97,17 @@ int main(int argc, char** argv) {
   rackopt::install_interrupt_handlers(
       args.command == "run" ? "\nrackopt: stopping after the current evaluation (Ctrl-C again to quit at once)...\n"
                             : "\nrackopt: stopping (Ctrl-C again to quit at once)...\n");
+  if (args.json) {
+    // What an at-once end (second Ctrl-C) prints: the same error object.
+    rackopt::JsonWriter j;
+    j.begin_object().key("ok").value(false).key("error").value("interrupted");
+    j.key("message").value("stopped at once by @").end_object();
+    const std::string text = j.str() + "\n";
+    const std::size_t at = text.find('@');
+    rackopt::set_immediate_stop_output(text.substr(0, at), text.substr(at + 1));
+  }
   auto fail = [&](int code, const std::string& kind, const std::string& msg) {
+    rackopt::set_immediate_stop_output("");
     if (args.json) print_json_error(kind, msg);
     std::cerr << "rackopt: " << msg << "\n";
     return code;

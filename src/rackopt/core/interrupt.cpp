@@ -26,11 +26,17 @@ char g_slot_path[kSlots][kPathMax];
 
 char g_notice[512];
 std::size_t g_notice_len = 0;
+std::atomic<int> g_immediate{0};
+char g_output[1024];
+std::atomic<std::size_t> g_output_len{0};
+std::size_t g_output_split = 0;  // where the signal's name goes
 
-void say(const char* text, std::size_t n) {
-  const ssize_t ignored = ::write(STDERR_FILENO, text, n);
+void say_to(int fd, const char* text, std::size_t n) {
+  const ssize_t ignored = ::write(fd, text, n);
   (void)ignored;
 }
+
+void say(const char* text, std::size_t n) { say_to(STDERR_FILENO, text, n); }
 
 extern "C" void on_stop_signal(int sig) {
   const int earlier = g_count.fetch_add(1);
@@ -39,12 +45,25 @@ extern "C" void on_stop_signal(int sig) {
   g_stop.store(true);
   const pid_t child = g_child_group.load();
   if (child > 0) ::kill(-child, SIGKILL);
-  if (earlier >= 1) {
+  if (earlier >= 1 || g_immediate.load() > 0) {
     for (int i = 0; i < kSlots; ++i) {
       if (g_slot_state[i].load() == 2) ::unlink(g_slot_path[i]);
     }
-    static const char msg[] = "\nrackopt: stopped at once (second interrupt)\n";
+    static const char msg[] = "\nrackopt: stopped at once; nothing partial was left\n";
     say(msg, sizeof msg - 1);
+    const std::size_t n = g_output_len.load();
+    if (n > 0) {
+      static const char sigint[] = "SIGINT (Ctrl-C)";
+      static const char sigterm[] = "SIGTERM";
+      const std::size_t split = std::min(g_output_split, n);
+      say_to(STDOUT_FILENO, g_output, split);
+      if (sig == SIGINT) {
+        say_to(STDOUT_FILENO, sigint, sizeof sigint - 1);
+      } else {
+        say_to(STDOUT_FILENO, sigterm, sizeof sigterm - 1);
+      }
+      say_to(STDOUT_FILENO, g_output + split, n - split);
+    }
     ::_exit(kInterruptedExit);
   }
   if (g_notice_len > 0) say(g_notice, g_notice_len);
@@ -93,6 +112,18 @@ void throw_if_stop_requested(const std::string& what) {
 }
 
 void set_child_process_group(pid_t pgid) { g_child_group.store(pgid); }
+
+ImmediateStopScope::ImmediateStopScope() { g_immediate.fetch_add(1); }
+ImmediateStopScope::~ImmediateStopScope() { g_immediate.fetch_sub(1); }
+
+void set_immediate_stop_output(const std::string& before, const std::string& after) {
+  g_output_len.store(0);
+  const std::string text = before + after;
+  if (text.size() > sizeof g_output) return;
+  std::memcpy(g_output, text.data(), text.size());
+  g_output_split = before.size();
+  g_output_len.store(text.size());
+}
 
 TemporaryFileGuard::TemporaryFileGuard(const std::string& path) {
   if (path.size() >= kPathMax) return;

@@ -10,6 +10,7 @@
 //    (gnuplot), so a hung child cannot keep the program alive.
 //  * A second signal ends the process at once: the registered temporary
 //    files are unlinked, the child group killed, then _exit(kInterruptedExit).
+//    So does the first one inside an ImmediateStopScope.
 #pragma once
 
 #include <stdexcept>
@@ -51,6 +52,23 @@ void throw_if_stop_requested(const std::string& what);
 // The process group the handler kills on a signal (a child started in its
 // own group: pgid = its pid); 0 = none. One at a time.
 void set_child_process_group(pid_t pgid);
+
+// While one of these lives, the first signal already ends the process at
+// once (as a second one does): for long computations that cannot poll the
+// stop request everywhere (a distribution fit over a million lives) and that
+// have nothing to save when stopped (nothing of theirs is recorded yet).
+class ImmediateStopScope {
+ public:
+  ImmediateStopScope();
+  ~ImmediateStopScope();
+  ImmediateStopScope(const ImmediateStopScope&) = delete;
+  ImmediateStopScope& operator=(const ImmediateStopScope&) = delete;
+};
+
+// What an at-once end writes to stdout before exiting (the --json error
+// object): `before`, the signal's name ("SIGINT (Ctrl-C)", "SIGTERM"), then
+// `after`; both "" for nothing. Clear it before printing the run's own output.
+void set_immediate_stop_output(const std::string& before, const std::string& after = "");
 
 // Registers a temporary file the second signal must unlink, for the life of
 // the object. At most 32 at once (further ones are simply not registered).
