@@ -83,8 +83,7 @@ std::string render_plot(const std::string& dir_name, const std::string& script, 
   const std::string program = env != nullptr && *env != '\0' ? env : "gnuplot";
   const std::string exe = find_program(program);
   if (exe.empty()) {
-    warnings.push_back(program + " not found: wrote " + (dir / script).string() + " but no plot " + png_path +
-                       " (install gnuplot-nox)");
+    warnings.push_back(program + " not found: wrote " + (dir / script).string() + " but no plot (install gnuplot-nox)");
     return "";
   }
   if (stop_requested()) {
