@@ -29,6 +29,7 @@ Args parse_args(int argc, char** argv) {
   std::vector<std::string> rest(argv + 1, argv + argc);
   for (std::size_t i = 0; i < rest.size(); ++i) {
     const std::string& s = rest[i];
+    if (s.rfind("--", 0) == 0) a.given.push_back(s.substr(0, s.find('=')));  // for check_options_apply
     auto need_value = [&](const std::string& flag) -> std::string {
       if (i + 1 >= rest.size()) throw UsageError(flag + " needs a value");
       return rest[++i];

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/plot.hpp"
 
 namespace rackopt::cli {
@@ -25,6 +26,7 @@ struct Args {
   int threads = 0;         // --threads N (wear, run): 0 = all cores
   bool resume = false;     // --resume (run): continue a study from its evaluation store
   bool progress = false;   // --progress (run): progress bar even when stderr is not a terminal
+  std::vector<std::string> given;  // every --option given, in order, without "=value"
 };
 
 struct UsageError : std::runtime_error {
@@ -34,10 +36,21 @@ struct UsageError : std::runtime_error {
 // Parses argv; throws UsageError for unknown options or missing values.
 Args parse_args(int argc, char** argv);
 
+// The options each command accepts, in one table (options.cpp). Throws
+// UsageError naming the option and the command when an option that does not
+// apply to a.command was given (options are never silently ignored).
+void check_options_apply(const Args& a);
+
+// "--set, --out, --json": the options `command` accepts ("" for an unknown command).
+std::string accepted_options(const std::string& command);
+
 // render_plot lives in the library (rackopt/output/plot.hpp): studies plot too.
 using rackopt::render_plot;
 
 double ms_since(std::chrono::steady_clock::time_point t0);
+
+// Tells stderr which stale temporary files taking the folder lock removed.
+void report_stale_temporaries(const rackopt::FolderLock& lock);
 
 int cmd_check(const Args& a);
 int cmd_stiffness(const Args& a);

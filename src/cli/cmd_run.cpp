@@ -1,21 +1,20 @@
-// rackopt run: a study file end to end (issue 4). Loads and checks the study,
-// runs it with the evaluation store in the output folder, shows progress,
-// survives Ctrl-C (the first one stops cleanly and the results so far are
-// written; --resume continues), then writes the report.
+// rackopt run: a study file end to end. Loads and checks the study, takes
+// the output folder's lock, runs the study with the evaluation store there,
+// shows progress, survives Ctrl-C (the first one stops cleanly and the
+// results so far are written; --resume continues; core/interrupt.hpp), then
+// writes the report.
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
 
-#include <unistd.h>
 
 #include "cli.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/report/study_report.hpp"
@@ -24,46 +23,6 @@
 
 namespace rackopt::cli {
 namespace {
-
-std::atomic<bool> g_stop{false};
-std::atomic<int> g_interrupts{0};
-
-// First SIGINT/SIGTERM: ask the runner to stop between evaluations (it
-// records what it has, the report is written). A second one: the default
-// action, at once; the store loses nothing committed either way.
-extern "C" void on_interrupt(int sig) {
-  if (g_interrupts.fetch_add(1) >= 1) {
-    std::signal(sig, SIG_DFL);
-    std::raise(sig);
-    return;
-  }
-  g_stop.store(true);
-  static const char msg[] =
-      "\nrackopt: stopping after the current evaluation (Ctrl-C again to quit at once)...\n";
-  const ssize_t ignored = ::write(STDERR_FILENO, msg, sizeof msg - 1);
-  (void)ignored;
-}
-
-// Installs the handlers for the life of the object, restores the old ones after.
-class InterruptGuard {
- public:
-  InterruptGuard() {
-    g_stop.store(false);
-    g_interrupts.store(0);
-    old_int_ = std::signal(SIGINT, on_interrupt);
-    old_term_ = std::signal(SIGTERM, on_interrupt);
-  }
-  ~InterruptGuard() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
-
- private:
-  void (*old_int_)(int) = SIG_DFL;
-  void (*old_term_)(int) = SIG_DFL;
-};
 
 // "railway sizing" -> "railway_sizing": a folder name without surprises.
 std::string folder_name(const std::string& name) {
@@ -166,13 +125,18 @@ int cmd_run(const Args& a) {
   const std::string out_dir =
       a.out_dir.empty() ? (fs::path("out") / folder_name(spec.name)).string() : a.out_dir;
 
+  const FolderLock lock(out_dir);  // held until the report is written
+  report_stale_temporaries(lock);
+
   const std::string objective = spec.objectives.empty() ? std::string() : spec.objectives[0].label;
+  // Optimizers and Pareto drivers usually end before their evaluation budget.
+  const bool budget_is_bound = spec.kind == study::StudyKind::kOptimize || spec.kind == study::StudyKind::kPareto;
   auto bar = std::make_unique<ProgressBar>(0, "evaluations", a.progress);
   study::RunOptions opt;
   opt.out_dir = out_dir;
   opt.resume = a.resume;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
-  opt.stop = [] { return g_stop.load(); };
+  opt.stop = [] { return stop_requested(); };
   opt.progress = [&](const study::Progress& p) {
     std::string detail;
     if (!objective.empty()) {
@@ -180,22 +144,24 @@ int cmd_run(const Args& a) {
     }
     if (p.failed > 0) detail += (detail.empty() ? "" : ", ") + std::to_string(p.failed) + " failed";
     if (!p.phase.empty()) detail += (detail.empty() ? "" : ", ") + p.phase;
-    bar->update(static_cast<long>(p.done), static_cast<long>(p.budget), detail);
+    bar->update(static_cast<long>(p.done), static_cast<long>(p.budget), detail, budget_is_bound);
   };
 
-  InterruptGuard guard;
   const study::StudyResult result = study::run_study(spec, opt);
-  bar.reset();  // finish the progress line before anything else is printed
+  bar->finish(result.status != "stopped");  // finish the progress line before anything else is printed
   const study::StudyReport rep = study::write_study_report(spec, result, out_dir);
 
   const std::string text = text_for_people(spec, result, rep, out_dir);
+  set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
     std::cout << rep.summary_json << "\n";
   } else {
     std::cout << text;
   }
-  if (result.status == "stopped") return 130;  // 128 + SIGINT, as a shell reports an interrupted program
+  // Stopped, or interrupted after the last evaluation (while the report was
+  // written): either way the run was interrupted.
+  if (result.status == "stopped" || stop_requested()) return kInterruptedExit;
   if (result.status == "all_failed") return kRunFailed;
   return kOk;
 }

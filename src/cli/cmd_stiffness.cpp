@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/output/atomic_file.hpp"
+#include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/geometry/pressure_angle_range.hpp"
 #include "rackopt/output/stiffness_report.hpp"
@@ -60,6 +62,10 @@ int cmd_check(const Args& a) {
 int cmd_stiffness(const Args& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const rackopt::Drive drive = rackopt::load_problem(a.file, a.overrides);
+  namespace fs = std::filesystem;
+  const fs::path dir = a.out_dir.empty() ? fs::path("out") / fs::path(a.file).stem() : fs::path(a.out_dir);
+  const rackopt::FolderLock lock(dir.string());
+  report_stale_temporaries(lock);
   const rackopt::MeshStiffnessModel model(drive);
   rackopt::Timings t;
   t.model_ms = ms_since(t0);
@@ -71,14 +77,15 @@ int cmd_stiffness(const Args& a) {
   const rackopt::TransmissionError te =
       rackopt::transmission_error(rackopt::period_stats(model, curve, rackopt::CurveQuantity::kApproach));
 
-  namespace fs = std::filesystem;
-  fs::path dir = a.out_dir.empty() ? fs::path("out") / fs::path(a.file).stem() : fs::path(a.out_dir);
+  rackopt::throw_if_stop_requested("stiffness");
+
   const fs::path csv = dir / "stiffness.csv";
   rackopt::write_file_atomic(csv.string(), rackopt::stiffness_csv(curve));
   const std::string title = (drive.name.empty() ? fs::path(a.file).stem().string() : drive.name);
   rackopt::write_file_atomic((dir / "stiffness.gp").string(),
                              rackopt::stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
   const std::string png = render_plot(dir, "stiffness.gp", "stiffness.png", curve.warnings);
+  rackopt::throw_if_stop_requested("stiffness");  // the CSV is complete; the plot was not drawn
   t.total_ms = ms_since(t0);
 
   std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve) +
@@ -88,6 +95,7 @@ int cmd_stiffness(const Args& a) {
   for (std::size_t i = model.warnings().size(); i < curve.warnings.size(); ++i) {
     text += "  warning: " + curve.warnings[i] + "\n";
   }
+  rackopt::set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
     std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, ripple, te, t, csv.string(), png) << "\n";

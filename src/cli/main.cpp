@@ -7,8 +7,10 @@
 //   rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]
 //               [--json] [--progress]
 //
-// Exit codes: 0 ok, 1 run failed, 2 bad input (file, key, value or an
-// impossible design). With --json exactly one JSON object goes to stdout and
+// Exit codes (docs/output.md, "Exit codes"): 0 ok, 1 run failed (also a
+// result file that cannot be written), 2 bad input, a usage error or an
+// output-folder conflict, 130 stopped by SIGINT (Ctrl-C) or SIGTERM. With
+// --json exactly one JSON object goes to stdout (on every error too) and
 // everything meant for people goes to stderr.
 #include <iostream>
 #include <string>
@@ -17,6 +19,8 @@
 
 #include "cli.hpp"
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/record/evaluation_store.hpp"
 
@@ -48,51 +52,95 @@ const char* kUsage =
     "\n"
     "  --set key=value   override any key of the problem, e.g. --set rack.span=\"1.2 m\"\n"
     "exit codes: 0 ok (also a study with no feasible design), 1 run failed (also a\n"
-    "study whose every evaluation failed), 2 bad input, 130 study stopped by Ctrl-C\n";
+    "study whose every evaluation failed, or a result file that cannot be written),\n"
+    "2 bad input, usage error or output folder conflict (in use by another run,\n"
+    "holds another study), 130 stopped by Ctrl-C or SIGTERM (a second one quits at\n"
+    "once); docs/output.md\n";
+
+// The one JSON error object of --json: {"ok": false, "error": kind, "message": msg}.
+void print_json_error(const std::string& kind, const std::string& msg) {
+  rackopt::JsonWriter j;
+  j.begin_object().key("ok").value(false).key("error").value(kind).key("message").value(msg).end_object();
+  std::cout << j.str() << "\n";
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   gsl_set_error_handler_off();  // GSL would abort() the process otherwise
+  // Known before parsing, so that a usage error is a JSON object too.
+  bool json = false;
+  for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";
+  auto usage_error = [&](const std::string& msg) {
+    if (json) print_json_error("usage", msg);
+    std::cerr << "rackopt: " << msg << "\n" << kUsage;
+    return kBadInput;
+  };
   Args args;
   try {
     args = parse_args(argc, argv);
+    check_options_apply(args);
   } catch (const UsageError& e) {
-    std::cerr << "rackopt: " << e.what() << "\n" << kUsage;
-    return kBadInput;
+    return usage_error(e.what());
   }
-  if (args.command.empty() || args.command == "help") {
+  if (args.command == "help") {
     std::cerr << kUsage;
-    return args.command == "help" ? kOk : kBadInput;
+    return kOk;
   }
+  if (args.command.empty()) return usage_error("no command given");
   if (args.command != "check" && args.command != "stiffness" && args.command != "wear" && args.command != "run") {
-    std::cerr << "rackopt: unknown command '" << args.command << "'\n" << kUsage;
-    return kBadInput;
+    return usage_error("unknown command '" + args.command + "'");
   }
   if (args.file.empty()) {
-    std::cerr << "rackopt: " << args.command << " needs a " << (args.command == "run" ? "study" : "problem")
-              << " FILE\n" << kUsage;
-    return kBadInput;
+    return usage_error(args.command + " needs a " + (args.command == "run" ? "study" : "problem") + " FILE");
+  }
+  rackopt::install_interrupt_handlers(
+      args.command == "run" ? "\nrackopt: stopping after the current evaluation (Ctrl-C again to quit at once)...\n"
+                            : "\nrackopt: stopping (Ctrl-C again to quit at once)...\n");
+  if (args.json) {
+    // What an at-once end (second Ctrl-C) prints: the same error object.
+    rackopt::JsonWriter j;
+    j.begin_object().key("ok").value(false).key("error").value("interrupted");
+    j.key("message").value("stopped at once by @").end_object();
+    const std::string text = j.str() + "\n";
+    const std::size_t at = text.find('@');
+    rackopt::set_immediate_stop_output(text.substr(0, at), text.substr(at + 1));
   }
   auto fail = [&](int code, const std::string& kind, const std::string& msg) {
-    if (args.json) {
-      rackopt::JsonWriter j;
-      j.begin_object().key("ok").value(false).key("error").value(kind).key("message").value(msg).end_object();
-      std::cout << j.str() << "\n";
-    }
+    rackopt::set_immediate_stop_output("");
+    if (args.json) print_json_error(kind, msg);
     std::cerr << "rackopt: " << msg << "\n";
     return code;
   };
   try {
-    if (args.command == "check") return cmd_check(args);
-    if (args.command == "stiffness") return cmd_stiffness(args);
-    if (args.command == "run") return cmd_run(args);
-    return cmd_wear(args);
+    int code;
+    if (args.command == "check") {
+      code = cmd_check(args);
+    } else if (args.command == "stiffness") {
+      code = cmd_stiffness(args);
+    } else if (args.command == "run") {
+      code = cmd_run(args);
+    } else {
+      code = cmd_wear(args);
+    }
+    // A stop that came after the last check point still ends the run as
+    // interrupted (what was written is complete; stderr says so).
+    if (rackopt::stop_requested() && code != rackopt::kInterruptedExit) {
+      std::cerr << "rackopt: stopped by " << rackopt::stop_reason() << " (the files written are complete)\n";
+      return rackopt::kInterruptedExit;
+    }
+    return code;
+  } catch (const rackopt::Interrupted& e) {
+    std::string msg = e.what();
+    if (msg.find("stopped by") == std::string::npos) msg += " (" + rackopt::stop_reason() + ")";
+    return fail(rackopt::kInterruptedExit, "interrupted", msg);
   } catch (const rackopt::InputError& e) {
     return fail(kBadInput, "input", e.what());
   } catch (const rackopt::DesignError& e) {
     return fail(kBadInput, "design:" + e.code(), std::string("impossible design (") + e.code() + "): " + e.what());
   } catch (const rackopt::record::OutputFolderConflict& e) {
+    return fail(kBadInput, "output_folder", e.what());
+  } catch (const rackopt::OutputFolderInUse& e) {
     return fail(kBadInput, "output_folder", e.what());
   } catch (const std::exception& e) {
     return fail(kRunFailed, "run", std::string("run failed: ") + e.what());

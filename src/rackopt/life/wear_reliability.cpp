@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/life/design_scatter.hpp"
 #include "rackopt/life/life_at_R_check.hpp"
@@ -264,6 +265,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   std::atomic<std::size_t> interpolated{0};
   out.lives = reliability::evaluate_samples(n, threads, [&](std::size_t i) {
+    if (opt.stop && opt.stop()) return std::numeric_limits<double>::quiet_NaN();  // skipped, thrown below
     if (opt.progress) opt.progress->tick();
     if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
     double years;
@@ -280,6 +282,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     }
     return years * kSecondsPerYear;
   });
+  if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
   tr.samples_interpolated = table ? interpolated.load() : 0;
   tr.samples_direct = n - tr.samples_interpolated;
   out.samples_ms = ms_since(t0);

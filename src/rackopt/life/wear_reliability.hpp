@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,9 @@ struct WearReliabilityOptions {
   long seed = -1;           // >= 0 overrides reliability.seed
   unsigned threads = 0;     // 0 = hardware concurrency; results do not depend on it
   ProgressBar* progress = nullptr;  // ticked once per sample
+  // Polled before each sample (Ctrl-C): once true the remaining samples are
+  // skipped and run_wear_reliability throws rackopt::Interrupted.
+  std::function<bool()> stop;
   // KS critical values and fit intervals. 100 (was 200): the critical value's
   // bootstrap sd is then 0.0015 vs 0.0010 at 200, i.e. 5 % vs 3.5 % of its
   // value (docs/models/reliability.md, "Bootstrap replicates"); at 200 the

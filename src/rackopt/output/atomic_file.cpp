@@ -1,39 +1,138 @@
 #include "rackopt/output/atomic_file.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/output/file_check.hpp"
+
 namespace rackopt {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Makes a rename in `dir` durable (best effort: some file systems refuse).
+void fsync_directory(const fs::path& dir) {
+  const int dfd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+  if (dfd >= 0) {
+    ::fsync(dfd);
+    ::close(dfd);
+  }
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
 
 void write_file_atomic(const std::string& path, const std::string& content) {
-  namespace fs = std::filesystem;
   const fs::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) {
     fs::create_directories(target.parent_path(), ec);
     if (ec) throw std::runtime_error("cannot create directory " + target.parent_path().string() + ": " + ec.message());
   }
+  if (content.empty()) throw std::runtime_error("refusing to write an empty " + path);
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write " + tmp + ": " + std::strerror(errno));
-  const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size() &&
-                  std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+  const TemporaryFileGuard guard(tmp);  // a second Ctrl-C unlinks it
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+  auto give_up = [&](const std::string& what, int err) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": " + what + ": " + std::strerror(err));
+  };
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      give_up("writing", errno);
+    }
+    if (n == 0) give_up("writing", EIO);
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0) give_up("flushing to disk", errno);
+  if (::close(fd) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": closing: " + std::strerror(err));
+  }
+  const std::string why = check_output_file(tmp, path, static_cast<long long>(content.size()));
+  if (!why.empty()) {
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot write " + path + ": the written file failed its check: " + why);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(err));
+  }
+  fsync_directory(target.parent_path());
+}
+
+std::string publish_verified(const std::string& tmp, const std::string& path) {
+  const std::string why = check_output_file(tmp, path);
+  if (!why.empty()) {
+    ::unlink(tmp.c_str());
+    return why;
+  }
+  const int fd = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+  const bool synced = fd >= 0 && ::fsync(fd) == 0;
   const int err = errno;
-  std::fclose(f);
-  if (!ok) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write " + tmp + ": " + std::strerror(err));
+  if (fd >= 0) ::close(fd);
+  if (!synced) {
+    ::unlink(tmp.c_str());
+    return std::string("cannot flush it to disk: ") + std::strerror(err);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const int err2 = errno;
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(err2));
+    ::unlink(tmp.c_str());
+    return std::string("cannot rename it into place: ") + std::strerror(err2);
   }
+  fsync_directory(fs::path(path).parent_path());
+  return "";
+}
+
+bool is_rackopt_temporary(const std::string& name) {
+  // "<name>.tmp.<digits>"
+  const std::size_t at = name.rfind(".tmp.");
+  if (at != std::string::npos && at > 0 && at + 5 < name.size()) {
+    bool digits = true;
+    for (std::size_t i = at + 5; i < name.size(); ++i) digits = digits && std::isdigit(static_cast<unsigned char>(name[i]));
+    if (digits) return true;
+  }
+  // "<name>.png.tmp"
+  if (name.size() > 8 && ends_with(name, ".png.tmp")) return true;
+  // ".<name>.tmpXXXXXX"
+  if (name.size() > 11 && name[0] == '.' && name.compare(name.size() - 10, 4, ".tmp") == 0) {
+    bool alnum = true;
+    for (std::size_t i = name.size() - 6; i < name.size(); ++i) {
+      alnum = alnum && std::isalnum(static_cast<unsigned char>(name[i]));
+    }
+    if (alnum) return true;
+  }
+  return false;
+}
+
+std::vector<std::string> remove_stale_temporaries(const std::string& dir) {
+  std::vector<std::string> removed;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    std::error_code ec2;
+    if (!it->is_regular_file(ec2) || !is_rackopt_temporary(name)) continue;
+    if (fs::remove(it->path(), ec2)) removed.push_back(name);
+  }
+  return removed;
 }
 
 }  // namespace rackopt

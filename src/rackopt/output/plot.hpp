@@ -1,7 +1,10 @@
-// Turning a gnuplot script into a PNG without ever leaving a half-written
-// image: the script writes `<png>.tmp`, which is renamed to `<png>` only when
-// gnuplot succeeded. Plots are a convenience: a missing or failing gnuplot is
-// a warning for the caller to show, never an error of the run.
+// Turning a gnuplot script into a PNG without ever publishing a half-written
+// image and without ever hanging: the script writes `<png>.tmp`; gnuplot runs
+// in its own process group with a time limit; the image gets its final name
+// only when gnuplot succeeded and the file passes check_output_file (PNG
+// signature, IEND chunk at the end). Plots are a convenience: a missing,
+// failing, hung or interrupted gnuplot is a warning naming the file for the
+// caller to show, never an error of the run.
 #pragma once
 
 #include <string>
@@ -10,15 +13,22 @@
 namespace rackopt {
 
 // Runs gnuplot on `dir`/`script` inside `dir` (the script must write
-// `png`.tmp, relative names), then renames `dir`/`png`.tmp to `dir`/`png`.
-// Returns the path of the PNG, or "" with one warning appended to `warnings`
-// when gnuplot is missing, fails (its stderr is kept in `dir`/`script`.log)
-// or the image cannot be placed.
+// `png`.tmp, relative names), stdin from /dev/null, stdout discarded, stderr
+// to `dir`/`script`.log; then publishes `dir`/`png`.tmp as `dir`/`png`
+// (publish_verified). Returns the path of the PNG, or "" with one warning
+// naming the PNG appended to `warnings` when gnuplot is missing, fails, runs
+// past the time limit (its process group is killed), the stop request is set
+// (Ctrl-C: the group is killed at once), or the image fails its check
+// (truncated by a full disk: gnuplot itself exits 0 then).
 // The program is `gnuplot` from PATH, or the one named by the environment
-// variable RACKOPT_GNUPLOT (tests set it to a missing program to check the
-// no-gnuplot path).
+// variable RACKOPT_GNUPLOT (tests set it to a missing program or to a
+// wrapper). The time limit is plot_time_limit_seconds().
 std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
                         std::vector<std::string>& warnings);
+
+// Seconds one gnuplot run may take: RACKOPT_PLOT_TIMEOUT (a positive number)
+// when set, else 60.
+double plot_time_limit_seconds();
 
 // `text` quoted for /bin/sh as one word.
 std::string shell_quote(const std::string& text);

@@ -162,7 +162,8 @@ struct EvaluationStore::Impl {
   [[noreturn]] void fail(const std::string& what, int rc) const {
     std::string detail = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
     if (rc == SQLITE_BUSY || rc == SQLITE_LOCKED) {
-      throw std::runtime_error("'" + path + "' is in use by another rackopt run (or another program " +
+      // A user decision like the other folder conflicts (exit 2), not a failed run.
+      throw OutputFolderConflict("'" + path + "' is in use by another rackopt run (or another program " +
                                "holds it open): " + what + " failed. Wait for that run to end or " +
                                "choose another --out folder.");
     }

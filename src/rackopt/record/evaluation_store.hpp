@@ -78,8 +78,8 @@ class EvaluationStore {
   //    takes the given fingerprint and variable names whatever resume says.
   //  * `variable_names` (the dimension of every x) are stored in the file.
   // Also throws std::runtime_error when the file is not a rackopt evaluation
-  // database, has a schema version this one does not read, or is held by
-  // another store. A file of the previous schema version (1, without
+  // database or has a schema version this one does not read, and
+  // OutputFolderConflict when it is held by another store. A file of the previous schema version (1, without
   // warnings) is upgraded to the current one in place, unless the open is
   // refused (then the file is left as it was); docs/recorder.md.
   static EvaluationStore open(const std::string& path, const std::string& study_fingerprint,

@@ -72,6 +72,13 @@ void write_atomically(const std::string& path, const std::string& content) {
   // mkstemp creates 0600; a table is meant to be read like any other output.
   if (::fchmod(fd, 0644) != 0) give_up("setting permissions");
   if (::fsync(fd) != 0) give_up("flushing to disk");
+  // Verified before it gets its name: every byte on disk, a complete last row.
+  struct stat st{};
+  if (::fstat(fd, &st) != 0) give_up("checking the written file");
+  if (static_cast<std::size_t>(st.st_size) != content.size() || content.empty() || content.back() != '\n') {
+    errno = EIO;
+    give_up("the written file is incomplete");
+  }
   if (::close(fd) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());

@@ -16,6 +16,7 @@
 #include <thread>
 #include <unordered_map>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/fidelity_settings.hpp"
@@ -514,7 +515,18 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
     // The scales come from the metric values only, so a rebuilt record and a
     // fresh evaluation give the same scales.
     start = run.lookup(x);
-    if (!start) start = Obtained{base.evaluate_design(x, run.threads()), Origin::kNew};
+    try {
+      // One evaluation, nothing of it recorded before it ends: Ctrl-C ends
+      // a long one (a Monte Carlo life at R and its fit) at once.
+      const ImmediateStopScope immediate;
+      if (!start) start = Obtained{base.evaluate_design(x, run.threads()), Origin::kNew};
+    } catch (const Interrupted&) {
+      // Ctrl-C inside one long evaluation (a Monte Carlo life at R): nothing
+      // of it is recorded; the study stops and --resume evaluates it again.
+      run.stop_requested();
+    }
+  }
+  if (start) {
     base.set_objective_scales_from(start->design);
     start->design.evaluation = base.map_metrics(start->design.metric_values, start->design.metric_ok,
                                                 start->design.evaluation.message);
@@ -531,7 +543,9 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
       }
       result.best = run.to_result(start->design, "start");
       status = start->design.evaluation.ok() ? "ok" : "all_failed";
-      if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok() && !run.stop_requested()) {
+      if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok() && run.stop_requested()) {
+        status = "stopped";  // the reliability analysis did not run
+      } else if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok()) {
         try {
           const Drive design = base.drive_at(start->design.x);
           WearReliabilityOptions wo = wear_reliability_options(design);
@@ -540,7 +554,15 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
           wo.threads = run.threads();
           if (spec.metric_options.bootstrap_replicates > 0)
             wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
+          wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
+          // Everything recorded is committed; the analysis itself is not
+          // recorded (--resume redoes it): Ctrl-C may end it at once.
+          run.store().flush();
+          const ImmediateStopScope immediate;
           result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
+        } catch (const Interrupted&) {
+          run.stop_requested();  // latch: the study stopped; --resume redoes the Monte Carlo
+          status = "stopped";
         } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
           status = "all_failed";
           result.solver_message = std::string("wear reliability: ") + e.what();

@@ -100,7 +100,8 @@ struct RunOptions {
   bool resume = false;
   unsigned threads = 0;                 // sweeps and Monte Carlo; 0 = all cores. Results do not depend on it.
   std::function<void(const Progress&)> progress;  // after every evaluation (may be empty)
-  std::function<bool()> stop;           // polled between evaluations; true = stop cleanly (Ctrl-C)
+  std::function<bool()> stop;           // polled between evaluations and by the Monte Carlo of a reliability
+                                        // study (from its worker threads: must be thread-safe); true = stop cleanly (Ctrl-C)
 };
 
 // Runs the study; at the end writes <out>/evaluations.csv from the store

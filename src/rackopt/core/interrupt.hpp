@@ -1,0 +1,86 @@
+// Ctrl-C and SIGTERM for the whole program, so that an interrupt is never
+// swallowed and never leaves a half-written file or a stray child behind
+// (docs/output.md, "Guarantees").
+//
+//  * The first SIGINT/SIGTERM sets a process-wide stop request. Long work
+//    polls stop_requested() (a study between evaluations, the Monte Carlo
+//    of a life at R between samples, a plot while gnuplot runs) and ends
+//    cleanly; the command line then exits kInterruptedExit.
+//  * The handler itself kills the process group of the registered child
+//    (gnuplot), so a hung child cannot keep the program alive.
+//  * A second signal ends the process at once: the registered temporary
+//    files are unlinked, the child group killed, then _exit(kInterruptedExit).
+//    So does the first one inside an ImmediateStopScope.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include <sys/types.h>
+
+namespace rackopt {
+
+// Exit status of a run ended by SIGINT or SIGTERM (128 + SIGINT, what a shell
+// reports for a program ended by Ctrl-C; the same for SIGTERM).
+constexpr int kInterruptedExit = 130;
+
+// Thrown by work that noticed the stop request and gave up part-way; nothing
+// it was producing has been published. Catch it before std::exception.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Installs the SIGINT and SIGTERM handlers described above (idempotent) and
+// clears any earlier stop request. `notice`, when not empty, is written to
+// stderr by the first signal (e.g. "stopping after the current evaluation").
+void install_interrupt_handlers(const std::string& notice = "");
+
+// True once SIGINT or SIGTERM arrived (or request_stop() was called).
+bool stop_requested();
+// The signal that asked to stop (SIGINT, SIGTERM), 0 when none did.
+int stop_signal();
+// "SIGINT (Ctrl-C)", "SIGTERM" or "a stop request".
+std::string stop_reason();
+// Sets the stop request as a first signal would (tests, embedding programs).
+void request_stop();
+// Forgets the stop request (tests).
+void clear_stop_request();
+// Throws Interrupted("<what>: stopped by <reason>") when a stop was requested.
+void throw_if_stop_requested(const std::string& what);
+
+// The process group the handler kills on a signal (a child started in its
+// own group: pgid = its pid); 0 = none. One at a time.
+void set_child_process_group(pid_t pgid);
+
+// While one of these lives, the first signal already ends the process at
+// once (as a second one does): for long computations that cannot poll the
+// stop request everywhere (a distribution fit over a million lives) and that
+// have nothing to save when stopped (nothing of theirs is recorded yet).
+class ImmediateStopScope {
+ public:
+  ImmediateStopScope();
+  ~ImmediateStopScope();
+  ImmediateStopScope(const ImmediateStopScope&) = delete;
+  ImmediateStopScope& operator=(const ImmediateStopScope&) = delete;
+};
+
+// What an at-once end writes to stdout before exiting (the --json error
+// object): `before`, the signal's name ("SIGINT (Ctrl-C)", "SIGTERM"), then
+// `after`; both "" for nothing. Clear it before printing the run's own output.
+void set_immediate_stop_output(const std::string& before, const std::string& after = "");
+
+// Registers a temporary file the second signal must unlink, for the life of
+// the object. At most 32 at once (further ones are simply not registered).
+class TemporaryFileGuard {
+ public:
+  explicit TemporaryFileGuard(const std::string& path);
+  ~TemporaryFileGuard();
+  TemporaryFileGuard(const TemporaryFileGuard&) = delete;
+  TemporaryFileGuard& operator=(const TemporaryFileGuard&) = delete;
+
+ private:
+  int slot_ = -1;
+};
+
+}  // namespace rackopt
