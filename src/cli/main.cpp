@@ -70,10 +70,22 @@ int main(int argc, char** argv) {
   gsl_set_error_handler_off();  // GSL would abort() the process otherwise
   // Known before parsing, so that a usage error is a JSON object too.
   bool json = false;
-  for (int i = 1; i < argc; ++i) json = json || std::string(argv[i]) == "--json";
+  bool args_command_empty = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a(argv[i]);
+    json = json || a == "--json";
+    if (!a.empty() && a[0] != '-') args_command_empty = false;
+  }
   auto usage_error = [&](const std::string& msg) {
     if (json) print_json_error("usage", msg);
-    std::cerr << "rackopt: " << msg << "\n" << kUsage;
+    // The whole usage only when there is no command to correct: otherwise the
+    // one line that says what is wrong is not buried under forty others.
+    std::cerr << "rackopt: " << msg << "\n";
+    if (args_command_empty) {
+      std::cerr << kUsage;
+    } else {
+      std::cerr << "(rackopt --help lists the commands and the options each accepts)\n";
+    }
     return kBadInput;
   };
   Args args;

@@ -1,4 +1,5 @@
 // The rackopt program end to end: exit codes, files written, --json output.
+#include <algorithm>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -188,3 +189,26 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 }  // namespace
+
+// A usage error names what is wrong in one line; the whole usage text is for a
+// command line without a command.
+TEST(Cli, UsageErrorIsOneLineUnlessTheCommandIsMissing) {
+  auto stderr_of = [](const std::string& args) {
+    const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args +
+                            " 2>&1 >/dev/null";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string err;
+    if (!p) return err;
+    std::array<char, 4096> buf{};
+    std::size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
+    pclose(p);
+    return err;
+  };
+  const std::string with_command = stderr_of("check problems/ship_lift.yaml --bogus");
+  EXPECT_NE(with_command.find("unknown option --bogus"), std::string::npos) << with_command;
+  EXPECT_EQ(with_command.find("usage:"), std::string::npos) << with_command;
+  EXPECT_LE(std::count(with_command.begin(), with_command.end(), '\n'), 2) << with_command;
+  const std::string without = stderr_of("--bogus");
+  EXPECT_NE(without.find("usage:"), std::string::npos) << without;
+}
