@@ -1,10 +1,10 @@
 // The rackopt program end to end: exit codes, files written, --json output.
-#include <algorithm>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
