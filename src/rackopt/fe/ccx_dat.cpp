@@ -1,0 +1,110 @@
+#include "rackopt/fe/ccx_dat.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace rackopt::fe {
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Whitespace-separated words of `line`.
+std::vector<std::string> words(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> w;
+  std::string s;
+  while (in >> s) w.push_back(s);
+  return w;
+}
+
+// Fortran drops the E of a three-digit exponent ("0.123456-100"): put it back.
+bool parse_number(const std::string& s, double& v) {
+  char* end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() && *end == '\0') return true;
+  if (end != s.c_str() && (*end == '-' || *end == '+') && std::isdigit(static_cast<unsigned char>(end[-1]))) {
+    const std::string fixed = s.substr(0, static_cast<std::size_t>(end - s.c_str())) + "E" + end;
+    v = std::strtod(fixed.c_str(), &end);
+    return *end == '\0';
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<DatBlock> parse_ccx_dat(const std::string& text, const std::string& file_name) {
+  std::vector<DatBlock> blocks;
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  enum class Expect { none, rows, total } expect = Expect::none;
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(file_name + ":" + std::to_string(line_no) + ": " + what);
+  };
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::vector<std::string> w = words(line);
+    if (w.empty()) continue;
+    // Header: "<quantity words> (a,b,c) for set NAME and time T"
+    const auto for_at = line.find(" for set ");
+    if (for_at != std::string::npos) {
+      const auto and_at = line.find(" and time ", for_at);
+      if (and_at == std::string::npos) fail("block header without a time: " + line);
+      const std::vector<std::string> head = words(line.substr(0, for_at));
+      const std::vector<std::string> set_words = words(line.substr(for_at + 9, and_at - for_at - 9));
+      double t = 0;
+      const std::vector<std::string> tail = words(line.substr(and_at + 10));
+      if (head.empty() || set_words.size() != 1 || tail.size() != 1 || !parse_number(tail[0], t)) {
+        fail("unreadable block header: " + line);
+      }
+      if (head[0] == "total") {
+        // The sum that follows belongs to the last block of that set.
+        if (blocks.empty() || upper(blocks.back().set) != upper(set_words[0])) fail("a total with no block before it");
+        expect = Expect::total;
+        continue;
+      }
+      DatBlock b;
+      b.quantity = head[0];
+      b.set = set_words[0];
+      b.time = t;
+      blocks.push_back(b);
+      expect = Expect::rows;
+      continue;
+    }
+    if (expect == Expect::none) fail("data outside any block: " + line);
+    std::array<double, 3> v{};
+    const std::size_t first = expect == Expect::total ? 0 : 1;
+    if (w.size() != first + 3) fail("expected " + std::to_string(first + 3) + " numbers: " + line);
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!parse_number(w[first + k], v[k])) fail("not a number '" + w[first + k] + "': " + line);
+      if (!std::isfinite(v[k])) fail("non-finite value (the solve diverged?): " + line);
+    }
+    if (expect == Expect::total) {
+      blocks.back().has_total = true;
+      blocks.back().total = v;
+      expect = Expect::none;
+    } else {
+      char* end = nullptr;
+      const long node = std::strtol(w[0].c_str(), &end, 10);
+      if (*end != '\0' || node <= 0) fail("not a node number '" + w[0] + "': " + line);
+      blocks.back().rows.emplace_back(static_cast<int>(node), v);
+    }
+  }
+  return blocks;
+}
+
+const DatBlock& find_dat_block(const std::vector<DatBlock>& blocks, const std::string& quantity,
+                               const std::string& set) {
+  for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) {
+    if (it->quantity == quantity && upper(it->set) == upper(set)) return *it;
+  }
+  throw std::runtime_error("the CalculiX output has no " + quantity + " for set " + set);
+}
+
+}  // namespace rackopt::fe

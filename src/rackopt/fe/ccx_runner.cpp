@@ -1,0 +1,145 @@
+#include "rackopt/fe/ccx_runner.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <unistd.h>
+
+#include "rackopt/core/child_process.hpp"
+
+namespace rackopt::fe {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// ccx's own complaint: its "*ERROR" lines with the line after each (ccx
+// breaks its messages over two lines), at most 6 lines.
+std::string solver_errors(const std::string& log) {
+  std::istringstream in(log);
+  std::string line, out;
+  int taken = 0;
+  bool follow = false;
+  const auto trim = [](std::string s) {
+    const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+  };
+  while (std::getline(in, line) && taken < 6) {
+    const std::string t = trim(line);
+    if (t.rfind("*ERROR", 0) == 0) {
+      out += (out.empty() ? "" : " / ") + t;
+      follow = true;
+      ++taken;
+    } else if (follow && !t.empty()) {
+      out += " " + t;
+      follow = false;
+    } else {
+      follow = false;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string find_ccx(const CcxOptions& options) {
+  std::string program = options.program;
+  if (program.empty()) {
+    const char* env = std::getenv("RACKOPT_CCX");
+    program = env != nullptr && *env != '\0' ? env : "ccx";
+  }
+  const std::string exe = find_program(program);
+  if (exe.empty()) {
+    throw CcxNotFound("CalculiX solver '" + program +
+                      "' not found (the FE reference needs it: install the Debian package calculix-ccx, "
+                      "or set RACKOPT_CCX to the ccx program)");
+  }
+  return exe;
+}
+
+void run_ccx(const std::string& deck, const std::function<void(const std::string& dat_text)>& read,
+             const CcxOptions& options) {
+  const std::string exe = find_ccx(options);
+  std::error_code ec;
+  const fs::path parent = options.work_parent.empty() ? fs::temp_directory_path(ec) : fs::path(options.work_parent);
+  std::string pattern = (parent / "rackopt-ccx-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw std::runtime_error("cannot make a folder for the CalculiX solve under " + parent.string() + ": " +
+                             std::strerror(errno));
+  }
+  const fs::path dir(pattern);
+  const fs::path inp = dir / "job.inp", log = dir / "job.log", dat = dir / "job.dat";
+  {
+    std::ofstream out(inp, std::ios::binary);
+    out << deck;
+    out.flush();
+    if (!out) throw CcxError("cannot write the CalculiX deck " + inp.string(), inp.string(), "");
+  }
+  ChildCommand command;
+  command.program = exe;
+  command.arguments = {"-i", "job"};
+  command.working_dir = dir.string();
+  command.stdout_file = "job.log";
+  command.stderr_file = "job.log";
+  command.environment = {"OMP_NUM_THREADS=1", "CCX_NPROC_EQUATION_SOLVER=1", "CCX_NPROC_RESULTS=1"};
+  command.time_limit_seconds = options.time_limit_seconds;
+  const ChildOutcome outcome = run_child(command);
+
+  const std::string log_text = read_text(log);
+  const std::string errors = solver_errors(log_text);
+  std::string failure;
+  switch (outcome.kind) {
+    case ChildOutcome::Kind::not_started:
+      failure = outcome.message;
+      break;
+    case ChildOutcome::Kind::stopped:
+      failure = "stopped by " + outcome.message;
+      break;
+    case ChildOutcome::Kind::timed_out: {
+      std::ostringstream s;
+      s << "did not finish within " << options.time_limit_seconds << " s and was killed";
+      failure = s.str();
+      break;
+    }
+    case ChildOutcome::Kind::signaled:
+      failure = "crashed (" + outcome.message + ")";
+      break;
+    case ChildOutcome::Kind::exited:
+      if (outcome.exit_code != 0) {
+        failure = "exited with status " + std::to_string(outcome.exit_code);
+      } else if (!errors.empty()) {
+        failure = "reported an error";
+      } else if (log_text.find("Job finished") == std::string::npos) {
+        failure = "did not finish its job";
+      } else if (!fs::exists(dat, ec)) {
+        failure = "wrote no job.dat";
+      }
+      break;
+  }
+  if (failure.empty()) {
+    try {
+      read(read_text(dat));
+    } catch (const std::exception& e) {
+      failure = "output rejected: " + std::string(e.what());
+    }
+  }
+  if (!failure.empty()) {
+    throw CcxError("CalculiX " + failure + (errors.empty() ? std::string() : ": " + errors) + " (deck kept: " +
+                       inp.string() + ", solver log: " + log.string() + ")",
+                   inp.string(), log.string());
+  }
+  fs::remove_all(dir, ec);
+}
+
+}  // namespace rackopt::fe
