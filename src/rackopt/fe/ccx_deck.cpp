@@ -50,7 +50,7 @@ std::string ccx_deck(const PlaneStressModel& model, double slice_thickness) {
     if (!seen.insert(u).second) throw std::invalid_argument("node sets " + name + " and another differ only in case");
   }
   std::ostringstream o;
-  o.precision(17);
+  o.precision(13);  // ccx reads at most 20 characters per number: -1.234567890123E-05
   o << "*HEADING\nrackopt FE reference: plane stress, CPS6, slice thickness " << slice_thickness << " m\n";
   o << "*NODE, NSET=NALL\n";
   for (std::size_t i = 0; i < model.mesh.nodes.size(); ++i) {

@@ -33,7 +33,8 @@ double slice_thickness_for(const Mesh2D& mesh);
 // supports, one linear *STATIC step with *CLOAD = load x slice_thickness,
 // *NODE PRINT of U for NALL and of RF with totals for kSupportSet (to the
 // .dat file). Nodes and elements are numbered index + 1. Numbers are
-// written with 17 significant digits. Calls check_model first (throws
+// written with 13 significant digits (CalculiX
+// reads at most 20 characters per number). Calls check_model first (throws
 // std::invalid_argument); also throws when a set uses the reserved name.
 std::string ccx_deck(const PlaneStressModel& model, double slice_thickness);
 

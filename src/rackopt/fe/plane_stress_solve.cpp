@@ -1,6 +1,7 @@
 #include "rackopt/fe/plane_stress_solve.hpp"
 
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,14 +31,22 @@ PlaneStressResult solve_plane_stress(const PlaneStressModel& model, const CcxOpt
           if (node < 1 || static_cast<std::size_t>(node) > n) throw std::runtime_error("job.dat names node " + std::to_string(node));
           result.displacement[node - 1] = {v[0], v[1]};
         }
+        // ccx's RF is the node's internal force K u, which on a node that is
+        // both supported and loaded includes the load: the support's
+        // reaction is RF minus the load there (the total printed by ccx is
+        // not used for that reason).
+        std::map<int, Point2> load_at;
+        for (const NodeLoad& l : model.loads) {
+          load_at[l.node].x += l.fx;
+          load_at[l.node].y += l.fy;
+        }
         const DatBlock& rf = find_dat_block(blocks, "forces", kSupportSet);
-        for (const auto& [node, v] : rf.rows) result.reactions.push_back({node - 1, v[0] / t, v[1] / t});
-        result.total_reaction = rf.has_total ? Point2{rf.total[0] / t, rf.total[1] / t} : Point2{};
-        if (!rf.has_total) {
-          for (const NodeLoad& r : result.reactions) {
-            result.total_reaction.x += r.fx;
-            result.total_reaction.y += r.fy;
-          }
+        for (const auto& [node, v] : rf.rows) {
+          const auto it = load_at.find(node - 1);
+          const Point2 f = it == load_at.end() ? Point2{} : it->second;
+          result.reactions.push_back({node - 1, v[0] / t - f.x, v[1] / t - f.y});
+          result.total_reaction.x += result.reactions.back().fx;
+          result.total_reaction.y += result.reactions.back().fy;
         }
         Point2 applied;
         double scale = 0;

@@ -12,7 +12,9 @@ namespace rackopt::fe {
 
 struct PlaneStressResult {
   std::vector<Point2> displacement;  // per node (m)
-  std::vector<NodeLoad> reactions;   // per supported node (N per metre of thickness)
+  // Support forces per supported node (N per metre of thickness): what the
+  // supports exert, loads applied on the node itself not included.
+  std::vector<NodeLoad> reactions;
   Point2 total_reaction;             // their sum (N/m)
   double slice_thickness = 0;        // of the solved slice (m)
 };
