@@ -39,10 +39,13 @@ build() {  # build DIR [cmake args...]
   cmake --build "$dir" -j "$JOBS" >&2
 }
 
-# The sanitizer build uses clang: it also builds the libFuzzer target, and
-# is the compiler of the fuzzer target that shares this build.
+# The sanitizer build uses clang: it also builds the libFuzzer target, which
+# shares its objects. -O1 with line tables only (the sanitizers' advice):
+# reports keep file:line, and it builds faster than full debug info at -O2
+# (docs/performance.md, "CI").
 build_sanitized() {
   CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRACKOPT_WERROR=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
     -DRACKOPT_SANITIZE=ON -DRACKOPT_FUZZ=ON -DRACKOPT_BENCHMARKS=OFF >/dev/null
   cmake --build build-asan -j "$JOBS" ${CMAKE_TARGET:+--target "$CMAKE_TARGET"} >&2
 }
