@@ -52,23 +52,28 @@ std::string last_gmsh_error() {
   return e;
 }
 
-Mesh2D mesh_in_session(const Polygon2D& polygon, double target_size, const std::vector<Refinement>& refinements) {
-  const std::size_t n = polygon.vertices.size();
-  std::vector<int> points, lines;
-  for (const Point2& v : polygon.vertices) points.push_back(gmsh::model::geo::addPoint(v.x, v.y, 0, target_size));
-  for (std::size_t i = 0; i < n; ++i) lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % n]));
-  const int loop = gmsh::model::geo::addCurveLoop(lines);
-  const int surface = gmsh::model::geo::addPlaneSurface({loop});
-  gmsh::model::geo::synchronize();
-
+Mesh2D mesh_in_session(const Polygon2D& outer, const std::vector<Polygon2D>& holes, double target_size,
+                       const std::vector<Refinement>& refinements) {
   // Physical groups carry the set names: one per name, of edges or vertices.
   std::map<std::string, std::vector<int>> edge_groups, vertex_groups;
-  for (std::size_t i = 0; i < n && i < polygon.edge_names.size(); ++i) {
-    if (!polygon.edge_names[i].empty()) edge_groups[polygon.edge_names[i]].push_back(lines[i]);
-  }
-  for (std::size_t i = 0; i < n && i < polygon.vertex_names.size(); ++i) {
-    if (!polygon.vertex_names[i].empty()) vertex_groups[polygon.vertex_names[i]].push_back(points[i]);
-  }
+  std::vector<int> loops;
+  const auto add_loop = [&](const Polygon2D& polygon) {
+    const std::size_t n = polygon.vertices.size();
+    std::vector<int> points, lines;
+    for (const Point2& v : polygon.vertices) points.push_back(gmsh::model::geo::addPoint(v.x, v.y, 0, target_size));
+    for (std::size_t i = 0; i < n; ++i) lines.push_back(gmsh::model::geo::addLine(points[i], points[(i + 1) % n]));
+    loops.push_back(gmsh::model::geo::addCurveLoop(lines));
+    for (std::size_t i = 0; i < n && i < polygon.edge_names.size(); ++i) {
+      if (!polygon.edge_names[i].empty()) edge_groups[polygon.edge_names[i]].push_back(lines[i]);
+    }
+    for (std::size_t i = 0; i < n && i < polygon.vertex_names.size(); ++i) {
+      if (!polygon.vertex_names[i].empty()) vertex_groups[polygon.vertex_names[i]].push_back(points[i]);
+    }
+  };
+  add_loop(outer);
+  for (const Polygon2D& hole : holes) add_loop(hole);
+  const int surface = gmsh::model::geo::addPlaneSurface(loops);
+  gmsh::model::geo::synchronize();
   std::map<std::string, std::pair<int, int>> groups;  // name -> (dim, tag)
   for (const auto& [name, tags] : edge_groups) groups[name] = {1, gmsh::model::addPhysicalGroup(1, tags)};
   for (const auto& [name, tags] : vertex_groups) {
@@ -144,22 +149,31 @@ Mesh2D mesh_in_session(const Polygon2D& polygon, double target_size, const std::
 }  // namespace
 
 Mesh2D mesh_polygon(const Polygon2D& polygon, double target_size, const std::vector<Refinement>& refinements) {
-  if (polygon.vertices.size() < 3) throw std::invalid_argument("mesh_polygon: a polygon needs at least 3 vertices");
+  return mesh_polygon_with_holes(polygon, {}, target_size, refinements);
+}
+
+Mesh2D mesh_polygon_with_holes(const Polygon2D& outer, const std::vector<Polygon2D>& holes, double target_size,
+                               const std::vector<Refinement>& refinements) {
   if (!(target_size > 0) || !std::isfinite(target_size)) {
     throw std::invalid_argument("mesh_polygon: the target element size must be positive");
   }
   for (const Refinement& r : refinements) {
     if (!(r.size > 0) || !(r.radius > 0)) throw std::invalid_argument("mesh_polygon: a refinement needs a positive size and radius");
   }
-  for (const auto* names : {&polygon.edge_names, &polygon.vertex_names}) {
-    for (const std::string& name : *names) {
-      if (!name.empty()) check_set_name(name);
+  std::vector<const Polygon2D*> all{&outer};
+  for (const Polygon2D& hole : holes) all.push_back(&hole);
+  for (const Polygon2D* polygon : all) {
+    if (polygon->vertices.size() < 3) throw std::invalid_argument("mesh_polygon: a polygon needs at least 3 vertices");
+    for (const auto* names : {&polygon->edge_names, &polygon->vertex_names}) {
+      for (const std::string& name : *names) {
+        if (!name.empty()) check_set_name(name);
+      }
     }
   }
   const std::lock_guard<std::mutex> lock(gmsh_mutex());
   try {
     const GmshSession session;
-    Mesh2D mesh = mesh_in_session(polygon, target_size, refinements);
+    Mesh2D mesh = mesh_in_session(outer, holes, target_size, refinements);
     if (mesh.triangles.empty()) throw std::runtime_error("Gmsh made no triangles");
     return mesh;
   } catch (const std::invalid_argument&) {

@@ -43,6 +43,13 @@ struct Refinement {
 Mesh2D mesh_polygon(const Polygon2D& polygon, double target_size,
                     const std::vector<Refinement>& refinements = {});
 
+// Meshes the region inside `outer` and outside each of `holes` (simple
+// polygons strictly inside `outer`, apart from each other; either
+// orientation), as mesh_polygon does; the holes' edge and vertex names make
+// node sets as the outer polygon's do. Same errors as mesh_polygon.
+Mesh2D mesh_polygon_with_holes(const Polygon2D& outer, const std::vector<Polygon2D>& holes, double target_size,
+                               const std::vector<Refinement>& refinements = {});
+
 // The rectangle [x0, x0 + length] x [y0, y0 + height] with edge sets
 // "BOTTOM", "RIGHT", "TOP", "LEFT" and corner sets "BOTTOM_LEFT",
 // "BOTTOM_RIGHT", "TOP_RIGHT", "TOP_LEFT".

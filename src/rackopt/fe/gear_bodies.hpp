@@ -1,0 +1,73 @@
+// The real gear bodies as FE meshes: the cutter-generated pinion (every
+// tooth with its involute flanks, trochoidal fillets and, where the cutter
+// undercuts it, the undercut) around its bore, and a rack segment of N
+// straight-sided teeth on its body. The curves come from geometry/
+// (pinion_generation.hpp, the same outline pinion_section.hpp integrates for
+// the pinion mass) as polylines, so the meshed area is exactly the polyline's
+// and differs from the true outline only by the chords' sag.
+#pragma once
+
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/fe/gmsh_mesher.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
+
+namespace rackopt::fe {
+
+// An outline to mesh: the outer polygon and its holes (the bore), with the
+// node-set names on their edges (gmsh_mesher.hpp).
+struct BodyOutline {
+  Polygon2D outer;
+  std::vector<Polygon2D> holes;
+};
+
+// Element size of refinement level `level` (0 = coarsest, module / 6; each
+// level halves it). Throws std::invalid_argument for a level outside 0..6.
+double gear_element_size(double module, int level);
+
+// Outline of the whole pinion of `pinion` (radii from `geometry`, which
+// build_mesh_geometry made from the same pinion), counter-clockwise, centre
+// at the origin, tooth 0's centre line along +y and tooth k's turned by
+// 2 pi k / z counter-clockwise. Each tooth: root arc, fillet (cutter tip
+// round) up to the form circle, involute up to the tip circle, tip arc, and
+// back down the other side. No piece is longer than `spacing` [m] between
+// points (and every curved piece has at least 8). Sets:
+//   "BORE"          the bore circle (a polygon of at least 180 sides;
+//                   no hole when bore_radius = 0, a solid disc)
+//   "T<k>_FLANK_R"  involute of tooth k on its +x side in the tooth frame
+//                   (pinion_generation.hpp), i.e. clockwise of its centre line
+//   "T<k>_FLANK_L"  the other involute of tooth k
+// Throws DesignError "bore_beyond_root" when bore_radius >= the root radius
+// (no rim left), std::invalid_argument for a negative or non-finite bore or
+// a non-positive spacing. No Gmsh work is done here.
+BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius,
+                                double spacing);
+
+// pinion_body_outline meshed with quadratic triangles of
+// gear_element_size(module, level), the outline points spaced at half that.
+// Errors: those of pinion_body_outline (before any Gmsh work), then those of
+// mesh_polygon_with_holes.
+Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius, int level = 0);
+
+// Outline of a rack segment of `teeth` teeth (counter-clockwise): x along the
+// rack from the middle of the tooth space left of tooth 0 to the middle of
+// the space right of tooth teeth-1 (length teeth * pitch), y up with the
+// datum line at 0, the tip line at addendum, the root line at -dedendum and
+// the body's bottom edge body_height below the root line. The teeth are the
+// straight-sided trapezoids of geometry.rack (flanks at the pressure angle,
+// half thickness w_f at the root line, as stiffness/rack_tooth.hpp models
+// them); the root corners are sharp (RackSpec.root_radius is not modelled).
+// Sets: "BASE" (bottom edge), "LEFT_END", "RIGHT_END" (the body's cut
+// faces, x = 0 and x = teeth * pitch), "T<k>_FLANK_L" / "T<k>_FLANK_R" (the
+// flanks of tooth k facing -x / +x).
+// Throws DesignError "pointed_tooth" (tip half thickness <= 0) or
+// "rack_root_closed" (no root left between the teeth), std::invalid_argument
+// for teeth < 1 or a non-positive body height.
+BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height);
+
+// rack_segment_outline meshed with quadratic triangles of
+// gear_element_size(module, level) (module = pitch / pi).
+Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_height, int level = 0);
+
+}  // namespace rackopt::fe
