@@ -67,15 +67,13 @@ TEST(GearBodies, UndercutRailwayPinionMeshesToItsOutlineArea) {
   expect_pinion_mesh_matches_outline(d.pinion, g, d.pinion.bore_radius, 0);
 }
 
-TEST(GearBodies, PinionWithoutUndercutFinerLevelAndSolidDisc) {
+TEST(GearBodies, PinionWithoutUndercutWithAndWithoutBore) {
   Drive d;  // z = 20, 20 deg, standard cutter: no undercut
   d.pinion.module = 0.004;
   const MeshGeometry g = build_mesh_geometry(d);
   ASSERT_FALSE(g.pinion.undercut);
-  expect_pinion_mesh_matches_outline(d.pinion, g, 0.012, 1);
+  expect_pinion_mesh_matches_outline(d.pinion, g, 0.7 * g.pinion.root_radius, 0);
   expect_pinion_mesh_matches_outline(d.pinion, g, 0.0, 0);  // no bore: a solid disc
-  EXPECT_GT(mesh_pinion_body(d.pinion, g, 0.012, 1).triangles.size(),
-            3 * mesh_pinion_body(d.pinion, g, 0.012, 0).triangles.size());
 }
 
 TEST(GearBodies, RackSegmentAreaAndSets) {
@@ -101,6 +99,11 @@ TEST(GearBodies, RackSegmentAreaAndSets) {
     }
     EXPECT_GE(m.node_set("T" + std::to_string(k) + "_FLANK_L").size(), 5u);
   }
+  // One refinement level: same body, elements half the size.
+  const Mesh2D fine = mesh_rack_segment(g, teeth, body, 1);
+  EXPECT_NEAR(fine.area(), expected, 1e-9 * expected);
+  EXPECT_GT(fine.triangles.size(), 3 * m.triangles.size());
+  EXPECT_LT(fine.largest_edge(), 1.6 * gear_element_size(d.pinion.module, 1));
 }
 
 TEST(GearBodies, ImpossibleBodiesAreDesignErrorsBeforeMeshing) {

@@ -104,6 +104,11 @@ Mesh2D mesh_in_session(const Polygon2D& outer, const std::vector<Polygon2D>& hol
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
   }
   gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  // The interior takes the target size, not sizes spread in from the boundary:
+  // an outline of many short chords (a gear's fillets and flanks) would
+  // otherwise fill the whole body with elements as small as its shortest chord.
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", target_size);
   gmsh::option::setNumber("Mesh.Algorithm", 6);  // Frontal-Delaunay: well-shaped triangles
   gmsh::option::setNumber("Mesh.ElementOrder", 2);
   gmsh::option::setNumber("Mesh.SecondOrderLinear", 1);  // mid-side nodes on straight chords
