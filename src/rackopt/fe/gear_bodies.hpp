@@ -31,8 +31,9 @@ double gear_element_size(double module, int level);
 // at the origin, tooth 0's centre line along +y and tooth k's turned by
 // 2 pi k / z counter-clockwise. Each tooth: root arc, fillet (cutter tip
 // round) up to the form circle, involute up to the tip circle, tip arc, and
-// back down the other side. No piece is longer than `spacing` [m] between
-// points (and every curved piece has at least 8). Sets:
+// back down the other side. Each curved piece is a polyline of chords of at
+// most about `spacing` [m] (estimated arc length / intervals, at least 8
+// intervals per piece). Sets:
 //   "BORE"          the bore circle (a polygon of at least 180 sides;
 //                   no hole when bore_radius = 0, a solid disc)
 //   "T<k>_FLANK_R"  involute of tooth k on its +x side in the tooth frame
