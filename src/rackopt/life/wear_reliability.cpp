@@ -195,7 +195,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   //    summary: R(t) and the life at R are conditional on a valid sample.
   //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
   //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
-  //    R(t) and the life at R count it as failed at t = 0 (seed 004's
+  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
   //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
   double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
   const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
