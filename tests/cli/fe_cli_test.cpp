@@ -106,4 +106,26 @@ TEST(FeCli, AnImpossibleDesignIsReportedAsTheOtherCommandsDoBeforeAnyFeWork) {
   EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
+TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
+  const std::string dir = tmp_dir("study_no_ccx");
+  std::filesystem::create_directories(tmp_root());
+  const std::string study = (tmp_root() / "verify_study.yaml").string();
+  std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
+                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
+                       << "report: [contact_ratio]\n"
+                       << "verify: {method: fe, positions: 2}\n";
+  const CliResult r = run("run " + study + " --out " + dir, true, "RACKOPT_CCX=/nonexistent");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("calculix-ccx"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // A bad verify key is bad input at its line and column.
+  std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
+                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
+                       << "verify: {method: fe, level: 9}\n";
+  const CliResult b = run("run " + study + " --out " + dir, true);
+  EXPECT_EQ(b.code, 2) << b.out;
+  EXPECT_NE(b.out.find("verify_study.yaml:3:29"), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find("verify.level"), std::string::npos) << b.out;
+}
+
 }  // namespace
