@@ -8,6 +8,7 @@
 
 #include "cli.hpp"
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/progress_bar.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
@@ -39,9 +40,14 @@ int cmd_fe(const Args& a) {
   report_stale_temporaries(lock);
   std::cerr << "rackopt: FE at " << opt.positions << " position" << (opt.positions == 1 ? "" : "s") << ", level "
             << opt.fe.level << " (mesh-position and single-tooth solves with ccx)...\n";
+  ProgressBar bar(0, "FE solves");
+  opt.progress = [&](std::size_t done, std::size_t total) {
+    bar.update(static_cast<long>(done), static_cast<long>(total), "");
+  };
   // Nothing is written before every solve has ended: a failure or Ctrl-C
   // leaves no partial result.
   const fe::FeComparison c = fe::compare_with_fe(drive, opt);
+  bar.finish(true);  // finish the progress line before printing
   throw_if_stop_requested("fe");
 
   const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;

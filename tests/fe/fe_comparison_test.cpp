@@ -176,7 +176,19 @@ TEST(FeComparison, ResultsDoNotDependOnTheThreadCount) {
   o4.threads = 4;
   o1.calls = a.calls();
   o4.calls = b.calls();
+  std::vector<std::size_t> done;
+  std::size_t total = 0;
+  o4.progress = [&](std::size_t k, std::size_t n) {
+    done.push_back(k);
+    total = n;
+  };
   const FeComparison c1 = compare_with_fe(d, o1), c4 = compare_with_fe(d, o4);
+  // Progress: every solve once, counted up to the total (1 mesh + 2 per pair per position).
+  std::size_t solves = 0;
+  for (const ComparedPosition& r : c4.rows) solves += 1 + 2 * r.pairs.size();
+  EXPECT_EQ(total, solves);
+  ASSERT_EQ(done.size(), solves);
+  for (std::size_t i = 0; i < done.size(); ++i) EXPECT_EQ(done[i], i + 1);
   EXPECT_EQ(c4.threads, 4u);
   const std::string csv1 = fe_comparison_csv(c1), csv4 = fe_comparison_csv(c4);
   // Every column but the analytic time (measured) is the same.

@@ -180,6 +180,8 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
   std::vector<std::exception_ptr> errors(jobs.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
+  std::mutex progress_mutex;
+  std::size_t done = 0;
   auto stopped = [&] { return options.stop && options.stop(); };
   auto worker = [&] {
     for (;;) {
@@ -197,6 +199,10 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
       } catch (...) {
         errors[i] = std::current_exception();
         failed.store(true);
+      }
+      if (options.progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        options.progress(++done, jobs.size());
       }
     }
   };

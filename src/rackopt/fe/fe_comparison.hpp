@@ -58,6 +58,9 @@ struct FeComparisonOptions {
   unsigned threads = 0;    // solves at once; 0 = all cores. Results do not depend on it.
   FeCalls calls;           // an empty member = the real solve
   std::function<bool()> stop;  // polled before each solve; true = stop (throws Interrupted)
+  // After each FE solve: solves done, solves in all. Called under a lock
+  // (one thread at a time), from the worker threads.
+  std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 // One theoretical pair at one position. Compliances in m/N (whole face width).
