@@ -130,11 +130,11 @@ std::vector<double> fe_positions(const MeshStiffnessModel& model, int positions,
 // (analytic - fe) / fe; NaN when fe is not a positive finite number.
 double relative_error(double analytic, double fe);
 
-// Runs the comparison. Throws InputError-free std::invalid_argument for
-// positions outside 1..kMaxFePositions or bad FE options, DesignError from
-// the analytic model before any FE solve (and from the FE solves before
-// their own work), CcxNotFound before any solve when ccx is missing,
-// CcxError from a failed solve (the lowest failing solve in position order,
+// Runs the comparison. Throws std::invalid_argument for positions outside
+// 1..kMaxFePositions or bad FE options, DesignError from the analytic model
+// before any FE solve (and from the FE solves before their own work),
+// CcxNotFound before any solve when ccx is missing (real solves only),
+// CcxError from a failed solve (the first failing solve in position order,
 // whatever the thread count), Interrupted when `stop` says so, and
 // std::runtime_error when an FE solve returns a K or compliance that is not
 // a positive finite number.
