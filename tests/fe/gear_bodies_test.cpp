@@ -4,7 +4,9 @@
 // closed form) and against the outline polygons themselves.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "rackopt/core/error.hpp"
@@ -104,6 +106,92 @@ TEST(GearBodies, RackSegmentAreaAndSets) {
   EXPECT_NEAR(fine.area(), expected, 1e-9 * expected);
   EXPECT_GT(fine.triangles.size(), 3 * m.triangles.size());
   EXPECT_LT(fine.largest_edge(), 1.6 * gear_element_size(d.pinion.module, 1));
+}
+
+// Longest corner-to-corner edge of the triangles whose centroid lies within `r` of `c`.
+double largest_edge_near(const Mesh2D& m, Point2 c, double r) {
+  double h = 0;
+  for (const Triangle6& t : m.triangles) {
+    const Point2 &a = m.nodes[t[0]], &b = m.nodes[t[1]], &d = m.nodes[t[2]];
+    if (std::hypot((a.x + b.x + d.x) / 3 - c.x, (a.y + b.y + d.y) / 3 - c.y) > r) continue;
+    for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, d}, std::pair{d, a}}) h = std::max(h, std::hypot(q.x - p.x, q.y - p.y));
+  }
+  return h;
+}
+
+template <class F>
+double seconds_of(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+TEST(GearBodies, GradedPinionIsFineOnlyOnItsFocusTeeth) {
+  const Drive d = railway();
+  const MeshGeometry g = build_mesh_geometry(d);
+  const double bore = d.pinion.bore_radius, size = gear_element_size(d.pinion.module, 0);
+  Mesh2D full, graded;
+  const double t_full = seconds_of([&] { full = mesh_pinion_body(d.pinion, g, bore, 0); });
+  MeshGrading grading;
+  grading.focus_teeth = {21, 0, 1};
+  const double t_graded = seconds_of([&] { graded = mesh_pinion_body(d.pinion, g, bore, 0, grading); });
+  std::printf("railway pinion level 0: %zu triangles %.2f s ungraded, %zu triangles %.2f s graded on 3 teeth\n",
+              full.triangles.size(), t_full, graded.triangles.size(), t_graded);
+  // The mesh fills its own (mixed-spacing) outline polygon, and that polygon
+  // is still the pinion to the coarse chords' sag.
+  const double coarse = std::min(4 * size, d.pinion.module);
+  const BodyOutline o = pinion_body_outline(d.pinion, g, bore, size / 2, grading.focus_teeth, coarse / 2);
+  double polygon_area = shoelace_area(o.outer);
+  for (const Polygon2D& h : o.holes) polygon_area -= std::abs(shoelace_area(h));
+  EXPECT_NEAR(graded.area(), polygon_area, 1e-9 * polygon_area);
+  const double expected = pinion_outline_area(d.pinion, g) - M_PI * bore * bore;
+  EXPECT_NEAR(graded.area(), expected, 2e-3 * expected);
+  EXPECT_LT(graded.triangles.size(), full.triangles.size() / 3);
+  // The focus teeth keep the level's size and their flank spacing; a far tooth is coarse.
+  for (int k : grading.focus_teeth) {
+    const Refinement disc = pinion_focus_disc(d.pinion, g, k, size);
+    EXPECT_LT(largest_edge_near(graded, disc.center, disc.radius), 1.6 * size) << "tooth " << k;
+    for (const std::string side : {"_FLANK_R", "_FLANK_L"}) {
+      const std::string set = "T" + std::to_string(k) + side;
+      EXPECT_EQ(graded.node_set(set).size(), full.node_set(set).size()) << set;
+    }
+  }
+  const Refinement far = pinion_focus_disc(d.pinion, g, 11, size);
+  EXPECT_GT(largest_edge_near(graded, far.center, far.radius), 2.5 * size);
+  EXPECT_LT(graded.node_set("T11_FLANK_R").size(), full.node_set("T11_FLANK_R").size());
+  EXPECT_LT(graded.largest_edge(), 1.6 * coarse);
+  grading.focus_teeth = {22};
+  EXPECT_THROW(mesh_pinion_body(d.pinion, g, bore, 0, grading), std::invalid_argument);
+}
+
+TEST(GearBodies, GradedRackAndExtraRefinementDiscs) {
+  const Drive d = railway();
+  const MeshGeometry g = build_mesh_geometry(d);
+  const RackGeometry& r = g.rack;
+  const double size = gear_element_size(d.pinion.module, 0), body = 3 * d.pinion.module;
+  const Mesh2D full = mesh_rack_segment(g, 3, body);
+  MeshGrading grading;
+  grading.focus_teeth = {1};
+  // A disc of a quarter of the size on tooth 1's +x flank at the datum line.
+  const Point2 spot{1.5 * r.pitch + r.half_thickness_at_datum, 0};
+  grading.refinements = {{spot, 0.3 * d.pinion.module, size / 4}};
+  const Mesh2D graded = mesh_rack_segment(g, 3, body, 0, grading);
+  const double expected = 3 * r.pitch * body +
+                          3 * (r.half_thickness_at_root + r.half_thickness_at_tip) * (r.addendum + r.dedendum);
+  EXPECT_NEAR(graded.area(), expected, 1e-9 * expected);
+  // Inside the disc (its rim already sees the steep growth to the coarse size).
+  EXPECT_LT(largest_edge_near(graded, spot, 0.2 * d.pinion.module), 0.3 * size);
+  const Refinement disc = rack_focus_disc(g, 1, size);
+  EXPECT_LT(largest_edge_near(graded, disc.center, disc.radius), 1.6 * size);
+  EXPECT_GT(largest_edge_near(graded, {0.1 * r.pitch, -r.dedendum - 0.8 * body}, 0.1 * body), 2 * size);
+  // The ungraded mesh takes the extra disc too.
+  MeshGrading only_disc;
+  only_disc.refinements = grading.refinements;
+  const Mesh2D refined = mesh_rack_segment(g, 3, body, 0, only_disc);
+  EXPECT_LT(largest_edge_near(refined, spot, 0.2 * d.pinion.module), 0.3 * size);
+  EXPECT_GT(refined.triangles.size(), full.triangles.size());
+  grading.focus_teeth = {3};
+  EXPECT_THROW(mesh_rack_segment(g, 3, body, 0, grading), std::invalid_argument);
 }
 
 TEST(GearBodies, ImpossibleBodiesAreDesignErrorsBeforeMeshing) {

@@ -111,22 +111,13 @@ double gear_element_size(double module, int level) {
   return module / 6.0 / std::pow(2.0, level);
 }
 
-BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius,
-                                double spacing) {
-  if (!(bore_radius >= 0) || !std::isfinite(bore_radius)) {
-    throw std::invalid_argument("pinion_body_outline: the bore radius must be >= 0");
-  }
-  if (!(spacing > 0) || !std::isfinite(spacing)) {
-    throw std::invalid_argument("pinion_body_outline: the point spacing must be positive");
-  }
-  const PinionGeometry& g = geometry.pinion;
-  if (bore_radius >= g.root_radius) {
-    throw DesignError("bore_beyond_root", "bore radius " + fmt(bore_radius * 1e3) + " mm is not below the root radius " +
-                                              fmt(g.root_radius * 1e3) + " mm: no rim is left to mesh");
-  }
+namespace {
+
+// One pinion tooth in its frame, counter-clockwise: from the middle of the
+// space on its +x side, over the tooth, to the middle of the space on its -x
+// side, curves at `spacing`; the flank pieces named after tooth `k`.
+std::vector<Piece> pinion_tooth_pieces(const PinionSpec& pinion, const PinionGeometry& g, double spacing, int k) {
   const double half_pitch_angle = M_PI / pinion.teeth;
-  // One tooth in its frame, counter-clockwise: from the middle of the space
-  // on its +x side, over the tooth, to the middle of the space on its -x side.
   const ToothPoint root = fillet_point(pinion, M_PI / 2);
   const std::vector<ToothPoint> root_arc = arc(g.root_radius, half_pitch_angle, std::atan2(root.x, root.y), spacing);
   std::vector<ToothPoint> fil = fillet(pinion, g.form_radius, spacing);
@@ -135,18 +126,83 @@ BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& ge
   const ToothPoint tip = inv.back();
   const double tip_angle = std::atan2(tip.x, tip.y);
   const std::vector<ToothPoint> tip_arc = arc(g.tip_radius, tip_angle, -tip_angle, spacing);
+  const std::string t = "T" + std::to_string(k);
+  return {{root_arc, ""},
+          {fil, ""},
+          {inv, t + "_FLANK_R"},
+          {tip_arc, ""},
+          {mirrored_reversed(inv), t + "_FLANK_L"},
+          {mirrored_reversed(fil), ""},
+          {mirrored_reversed(root_arc), ""}};
+}
 
+void check_focus(const std::vector<int>& focus, int teeth, const char* who) {
+  for (int k : focus) {
+    if (k < 0 || k >= teeth) {
+      throw std::invalid_argument(std::string(who) + ": focus tooth " + std::to_string(k) + " is not one of 0.." +
+                                  std::to_string(teeth - 1));
+    }
+  }
+}
+
+bool contains(const std::vector<int>& v, int k) { return std::find(v.begin(), v.end(), k) != v.end(); }
+
+// The coarse size of a graded mesh: coarse_factor times the level's size, at most the module.
+double coarse_size(const MeshGrading& grading, double size, double module) {
+  if (!(grading.coarse_factor >= 1) || !std::isfinite(grading.coarse_factor)) {
+    throw std::invalid_argument("MeshGrading: coarse_factor must be >= 1");
+  }
+  return std::max(size, std::min(grading.coarse_factor * size, module));
+}
+
+}  // namespace
+
+Refinement pinion_focus_disc(const PinionSpec& pinion, const MeshGeometry& geometry, int tooth, double size) {
+  check_focus({tooth}, pinion.teeth, "pinion_focus_disc");
+  const PinionGeometry& g = geometry.pinion;
+  const double yc = 0.5 * (g.root_radius + g.tip_radius);
+  double reach = 0;
+  // The outline's shape, not its spacing, sets the reach: a fine sampling.
+  for (const Piece& piece : pinion_tooth_pieces(pinion, g, 0.01 * pinion.module, tooth)) {
+    for (const ToothPoint& p : piece.points) reach = std::max(reach, std::hypot(p.x, p.y - yc));
+  }
+  const double a = 2 * M_PI * tooth / pinion.teeth;
+  return {{-yc * std::sin(a), yc * std::cos(a)}, reach, size};
+}
+
+Refinement rack_focus_disc(const MeshGeometry& geometry, int tooth, double size) {
+  if (tooth < 0) throw std::invalid_argument("rack_focus_disc: the tooth index must be >= 0");
+  const RackGeometry& r = geometry.rack;
+  const double half_height = 0.5 * (r.addendum + r.dedendum);
+  return {{(tooth + 0.5) * r.pitch, 0.5 * (r.addendum - r.dedendum)}, std::hypot(0.5 * r.pitch, half_height), size};
+}
+
+BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius,
+                                double spacing, const std::vector<int>& focus_teeth, double other_spacing) {
+  if (!(bore_radius >= 0) || !std::isfinite(bore_radius)) {
+    throw std::invalid_argument("pinion_body_outline: the bore radius must be >= 0");
+  }
+  if (!(spacing > 0) || !std::isfinite(spacing) || !(other_spacing >= 0) || !std::isfinite(other_spacing)) {
+    throw std::invalid_argument("pinion_body_outline: the point spacing must be positive");
+  }
+  check_focus(focus_teeth, pinion.teeth, "pinion_body_outline");
+  const PinionGeometry& g = geometry.pinion;
+  if (bore_radius >= g.root_radius) {
+    throw DesignError("bore_beyond_root", "bore radius " + fmt(bore_radius * 1e3) + " mm is not below the root radius " +
+                                              fmt(g.root_radius * 1e3) + " mm: no rim is left to mesh");
+  }
+  const bool graded = !focus_teeth.empty();
+  const double coarse = graded && other_spacing > 0 ? other_spacing : spacing;
   BodyOutline out;
   const double merge = 1e-9 * g.tip_radius;
+  // Two tooth shapes at most: built once, the flank names set per tooth.
+  const std::vector<Piece> fine_tooth = pinion_tooth_pieces(pinion, g, spacing, 0);
+  const std::vector<Piece> coarse_tooth = graded ? pinion_tooth_pieces(pinion, g, coarse, 0) : fine_tooth;
   for (int k = 0; k < pinion.teeth; ++k) {
+    std::vector<Piece> pieces = !graded || contains(focus_teeth, k) ? fine_tooth : coarse_tooth;
     const std::string t = "T" + std::to_string(k);
-    const std::vector<Piece> pieces = {{root_arc, ""},
-                                       {fil, ""},
-                                       {inv, t + "_FLANK_R"},
-                                       {tip_arc, ""},
-                                       {mirrored_reversed(inv), t + "_FLANK_L"},
-                                       {mirrored_reversed(fil), ""},
-                                       {mirrored_reversed(root_arc), ""}};
+    pieces[2].name = t + "_FLANK_R";
+    pieces[4].name = t + "_FLANK_L";
     append(out.outer, pieces, 2 * M_PI * k / pinion.teeth, merge);
   }
   // The last tooth's space middle is tooth 0's start: close without repeating it.
@@ -156,7 +212,7 @@ BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& ge
     out.outer.edge_names.pop_back();
   }
   if (bore_radius > 0) {
-    const int n = std::max(kMinBoreSides, static_cast<int>(std::ceil(2 * M_PI * bore_radius / spacing)));
+    const int n = std::max(kMinBoreSides, static_cast<int>(std::ceil(2 * M_PI * bore_radius / coarse)));
     Polygon2D bore;
     for (int i = 0; i < n; ++i) {
       const double a = 2 * M_PI * i / n;
@@ -168,10 +224,19 @@ BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& ge
   return out;
 }
 
-Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius, int level) {
+Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius, int level,
+                        const MeshGrading& grading) {
   const double size = gear_element_size(pinion.module, level);
-  const BodyOutline o = pinion_body_outline(pinion, geometry, bore_radius, size / 2);
-  return mesh_polygon_with_holes(o.outer, o.holes, size);
+  if (grading.focus_teeth.empty()) {
+    const BodyOutline o = pinion_body_outline(pinion, geometry, bore_radius, size / 2);
+    return mesh_polygon_with_holes(o.outer, o.holes, size, grading.refinements);
+  }
+  const double coarse = coarse_size(grading, size, pinion.module);
+  const BodyOutline o = pinion_body_outline(pinion, geometry, bore_radius, size / 2, grading.focus_teeth, coarse / 2);
+  std::vector<Refinement> discs;
+  for (int k : grading.focus_teeth) discs.push_back(pinion_focus_disc(pinion, geometry, k, size));
+  discs.insert(discs.end(), grading.refinements.begin(), grading.refinements.end());
+  return mesh_polygon_with_holes(o.outer, o.holes, coarse, discs);
 }
 
 BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height) {
@@ -212,10 +277,17 @@ BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double
   return out;
 }
 
-Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_height, int level) {
-  const double size = gear_element_size(geometry.rack.pitch / M_PI, level);
+Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_height, int level,
+                         const MeshGrading& grading) {
+  const double module = geometry.rack.pitch / M_PI;
+  const double size = gear_element_size(module, level);
   const BodyOutline o = rack_segment_outline(geometry, teeth, body_height);
-  return mesh_polygon_with_holes(o.outer, o.holes, size);
+  if (grading.focus_teeth.empty()) return mesh_polygon_with_holes(o.outer, o.holes, size, grading.refinements);
+  check_focus(grading.focus_teeth, teeth, "mesh_rack_segment");
+  std::vector<Refinement> discs;
+  for (int k : grading.focus_teeth) discs.push_back(rack_focus_disc(geometry, k, size));
+  discs.insert(discs.end(), grading.refinements.begin(), grading.refinements.end());
+  return mesh_polygon_with_holes(o.outer, o.holes, coarse_size(grading, size, module), discs);
 }
 
 }  // namespace rackopt::fe
