@@ -239,10 +239,13 @@ Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, 
   return mesh_polygon_with_holes(o.outer, o.holes, coarse, discs);
 }
 
-BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height) {
+BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height, double root_radius) {
   if (teeth < 1) throw std::invalid_argument("rack_segment_outline: at least one tooth");
   if (!(body_height > 0) || !std::isfinite(body_height)) {
     throw std::invalid_argument("rack_segment_outline: the body height must be positive");
+  }
+  if (!(root_radius >= 0) || !std::isfinite(root_radius)) {
+    throw std::invalid_argument("rack_segment_outline: the root radius must be >= 0 (0 = the cutter tip radius)");
   }
   const RackGeometry& r = geometry.rack;
   if (!(r.half_thickness_at_tip > 0)) {
@@ -254,6 +257,19 @@ BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double
                                               fmt(r.half_thickness_at_root * 1e3) + " mm leaves no root in a pitch of " +
                                               fmt(r.pitch * 1e3) + " mm");
   }
+  const double rho = root_radius > 0 ? root_radius : geometry.pinion.cutter_tip_radius;
+  const double a0 = geometry.pressure_angle, sin_a0 = std::sin(a0), cos_a0 = std::cos(a0);
+  // The air angle at a root corner is 90 deg + a0: the tangent points lie
+  // t = rho / tan(45 deg + a0/2) = rho cos a0 / (1 + sin a0) from it.
+  const double t = rho * cos_a0 / (1 + sin_a0);
+  const double root_width = r.pitch - 2 * r.half_thickness_at_root;
+  const double flank_length = (r.addendum + r.dedendum) / cos_a0;
+  if (2 * t > root_width || t > flank_length) {
+    throw DesignError("rack_root_round", "rack root round " + fmt(rho * 1e3) + " mm reaches " + fmt(t * 1e3) +
+                                             " mm along the root line and the flank: the root holds " +
+                                             fmt(root_width / 2 * 1e3) + " mm per round, the flank " +
+                                             fmt(flank_length * 1e3) + " mm");
+  }
   const double y_root = -r.dedendum, y_tip = r.addendum, y_base = y_root - body_height;
   const double length = teeth * r.pitch;
   BodyOutline out;
@@ -262,26 +278,53 @@ BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double
     p.vertices.push_back({x, y});
     p.edge_names.push_back(edge);
   };
+  constexpr int kRoundChords = 12;
+  // The round of a corner at x_corner: centre rho above the root line, t from
+  // the corner on the space side (side = +1 right of a tooth, -1 left),
+  // swept from angle `from` to `to` about it.
+  const auto round = [&](double x_corner, int side, double from, double to, const std::string& last_edge) {
+    const Point2 c{x_corner + side * t, y_root + rho};
+    for (int i = 0; i <= kRoundChords; ++i) {
+      const double a = from + (to - from) * i / kRoundChords;
+      add(c.x + rho * std::cos(a), c.y + rho * std::sin(a), i == kRoundChords ? last_edge : "");
+    }
+  };
   add(0, y_base, "BASE");
   add(length, y_base, "RIGHT_END");
   add(length, y_root, "");
   for (int k = teeth - 1; k >= 0; --k) {  // along the top from +x to -x: counter-clockwise
     const double xc = (k + 0.5) * r.pitch;
-    const std::string t = "T" + std::to_string(k);
-    add(xc + r.half_thickness_at_root, y_root, t + "_FLANK_R");
+    const std::string name = "T" + std::to_string(k);
+    if (t > 0) {
+      round(xc + r.half_thickness_at_root, +1, 1.5 * M_PI, M_PI + a0, name + "_FLANK_R");
+    } else {
+      add(xc + r.half_thickness_at_root, y_root, name + "_FLANK_R");
+    }
     add(xc + r.half_thickness_at_tip, y_tip, "");
-    add(xc - r.half_thickness_at_tip, y_tip, t + "_FLANK_L");
-    add(xc - r.half_thickness_at_root, y_root, "");
+    add(xc - r.half_thickness_at_tip, y_tip, name + "_FLANK_L");
+    if (t > 0) {
+      round(xc - r.half_thickness_at_root, -1, 2 * M_PI - a0, 1.5 * M_PI, "");
+    } else {
+      add(xc - r.half_thickness_at_root, y_root, "");
+    }
   }
   add(0, y_root, "LEFT_END");
+  // A round that fills its half of an end space exactly ends on the cut face.
+  for (std::size_t i = 1; i < p.vertices.size(); ++i) {
+    if (std::hypot(p.vertices[i].x - p.vertices[i - 1].x, p.vertices[i].y - p.vertices[i - 1].y) < 1e-12 * r.pitch) {
+      p.vertices.erase(p.vertices.begin() + static_cast<long>(i));
+      p.edge_names.erase(p.edge_names.begin() + static_cast<long>(i - 1));
+      --i;
+    }
+  }
   return out;
 }
 
 Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_height, int level,
-                         const MeshGrading& grading) {
+                         const MeshGrading& grading, double root_radius) {
   const double module = geometry.rack.pitch / M_PI;
   const double size = gear_element_size(module, level);
-  const BodyOutline o = rack_segment_outline(geometry, teeth, body_height);
+  const BodyOutline o = rack_segment_outline(geometry, teeth, body_height, root_radius);
   if (grading.focus_teeth.empty()) return mesh_polygon_with_holes(o.outer, o.holes, size, grading.refinements);
   check_focus(grading.focus_teeth, teeth, "mesh_rack_segment");
   std::vector<Refinement> discs;

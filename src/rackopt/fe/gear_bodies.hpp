@@ -86,20 +86,28 @@ Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, 
 // the body's bottom edge body_height below the root line. The teeth are the
 // straight-sided trapezoids of geometry.rack (flanks at the pressure angle,
 // half thickness w_f at the root line, as stiffness/rack_tooth.hpp models
-// them); the root corners are sharp (RackSpec.root_radius is not modelled).
+// them), each root corner rounded by an arc of radius `root_radius`
+// tangent to the flank and to the root line (RackSpec.root_radius; 0 = the
+// pinion cutter tip radius geometry.pinion.cutter_tip_radius, a sharp
+// corner when that is 0 too), as 12 chords. The round reaches
+// t = rho / tan(45 deg + a0 / 2) along both lines from the corner, up to
+// the height rho (1 - sin a0) on the flank.
 // Sets: "BASE" (bottom edge), "LEFT_END", "RIGHT_END" (the body's cut
 // faces, x = 0 and x = teeth * pitch), "T<k>_FLANK_L" / "T<k>_FLANK_R" (the
-// flanks of tooth k facing -x / +x).
-// Throws DesignError "pointed_tooth" (tip half thickness <= 0) or
-// "rack_root_closed" (no root left between the teeth), std::invalid_argument
-// for teeth < 1 or a non-positive body height.
-BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height);
+// straight flanks of tooth k facing -x / +x, from their round up to the tip).
+// Throws DesignError "pointed_tooth" (tip half thickness <= 0),
+// "rack_root_closed" (no root left between the teeth) or "rack_root_round"
+// (two rounds overlap on the root line, or a round runs past the tip),
+// std::invalid_argument for teeth < 1, a non-positive body height or a
+// negative root radius.
+BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height,
+                                 double root_radius = 0);
 
 // rack_segment_outline meshed with quadratic triangles of
 // gear_element_size(module, level) (module = pitch / pi), graded as
 // `grading` says (a focus tooth outside 0..teeth-1 throws
 // std::invalid_argument).
 Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_height, int level = 0,
-                         const MeshGrading& grading = {});
+                         const MeshGrading& grading = {}, double root_radius = 0);
 
 }  // namespace rackopt::fe
