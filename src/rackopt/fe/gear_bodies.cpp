@@ -14,6 +14,10 @@ namespace {
 
 constexpr int kMinCurvePoints = 8;
 constexpr int kMinBoreSides = 180;
+// Away from the focus teeth of a graded mesh the shape matters little to the
+// focus teeth: the curves may be as coarse as the size asks, the bore a 72-gon.
+constexpr int kMinCoarseCurvePoints = 2;
+constexpr int kMinCoarseBoreSides = 72;
 
 // A tooth-frame outline piece with the set name of the edges it makes.
 struct Piece {
@@ -28,12 +32,12 @@ double length_of(const std::vector<ToothPoint>& pts) {
 }
 
 // Number of intervals for a curve of (estimated) length `length`.
-int intervals_for(double length, double spacing) {
-  return std::max(kMinCurvePoints, static_cast<int>(std::ceil(length / spacing)));
+int intervals_for(double length, double spacing, int min_intervals) {
+  return std::max(min_intervals, static_cast<int>(std::ceil(length / spacing)));
 }
 
-std::vector<ToothPoint> arc(double radius, double from_angle, double to_angle, double spacing) {
-  const int n = intervals_for(radius * std::abs(to_angle - from_angle), spacing);
+std::vector<ToothPoint> arc(double radius, double from_angle, double to_angle, double spacing, int min_intervals) {
+  const int n = intervals_for(radius * std::abs(to_angle - from_angle), spacing, min_intervals);
   std::vector<ToothPoint> pts;
   for (int i = 0; i <= n; ++i) {
     const double a = from_angle + (to_angle - from_angle) * i / n;
@@ -44,7 +48,7 @@ std::vector<ToothPoint> arc(double radius, double from_angle, double to_angle, d
 
 // The fillet from the root (phi = pi/2) up while below the form circle, as
 // pinion_section.cpp takes it: above the form circle the involute is the flank.
-std::vector<ToothPoint> fillet(const PinionSpec& pinion, double form_radius, double spacing) {
+std::vector<ToothPoint> fillet(const PinionSpec& pinion, double form_radius, double spacing, int min_intervals) {
   const double a0 = pinion.pressure_angle;
   const auto sample = [&](int n) {
     std::vector<ToothPoint> pts;
@@ -55,16 +59,17 @@ std::vector<ToothPoint> fillet(const PinionSpec& pinion, double form_radius, dou
     }
     return pts;
   };
-  return sample(intervals_for(length_of(sample(64)), spacing));
+  return sample(intervals_for(length_of(sample(64)), spacing, min_intervals));
 }
 
-std::vector<ToothPoint> involute(const PinionSpec& pinion, double from_radius, double to_radius, double spacing) {
+std::vector<ToothPoint> involute(const PinionSpec& pinion, double from_radius, double to_radius, double spacing,
+                                 int min_intervals) {
   const auto sample = [&](int n) {
     std::vector<ToothPoint> pts;
     for (int i = 0; i <= n; ++i) pts.push_back(involute_point(pinion, from_radius + (to_radius - from_radius) * i / n));
     return pts;
   };
-  return sample(intervals_for(length_of(sample(64)), spacing));
+  return sample(intervals_for(length_of(sample(64)), spacing, min_intervals));
 }
 
 // Appends the pieces' points to `polygon`, turned by `angle` counter-clockwise,
@@ -116,16 +121,17 @@ namespace {
 // One pinion tooth in its frame, counter-clockwise: from the middle of the
 // space on its +x side, over the tooth, to the middle of the space on its -x
 // side, curves at `spacing`; the flank pieces named after tooth `k`.
-std::vector<Piece> pinion_tooth_pieces(const PinionSpec& pinion, const PinionGeometry& g, double spacing, int k) {
+std::vector<Piece> pinion_tooth_pieces(const PinionSpec& pinion, const PinionGeometry& g, double spacing, int k,
+                                       int min_intervals = kMinCurvePoints) {
   const double half_pitch_angle = M_PI / pinion.teeth;
   const ToothPoint root = fillet_point(pinion, M_PI / 2);
-  const std::vector<ToothPoint> root_arc = arc(g.root_radius, half_pitch_angle, std::atan2(root.x, root.y), spacing);
-  std::vector<ToothPoint> fil = fillet(pinion, g.form_radius, spacing);
-  const std::vector<ToothPoint> inv = involute(pinion, g.form_radius, g.tip_radius, spacing);
+  const std::vector<ToothPoint> root_arc = arc(g.root_radius, half_pitch_angle, std::atan2(root.x, root.y), spacing, min_intervals);
+  std::vector<ToothPoint> fil = fillet(pinion, g.form_radius, spacing, min_intervals);
+  const std::vector<ToothPoint> inv = involute(pinion, g.form_radius, g.tip_radius, spacing, min_intervals);
   fil.push_back(inv.front());  // the fillet's last chord ends on the form circle
   const ToothPoint tip = inv.back();
   const double tip_angle = std::atan2(tip.x, tip.y);
-  const std::vector<ToothPoint> tip_arc = arc(g.tip_radius, tip_angle, -tip_angle, spacing);
+  const std::vector<ToothPoint> tip_arc = arc(g.tip_radius, tip_angle, -tip_angle, spacing, min_intervals);
   const std::string t = "T" + std::to_string(k);
   return {{root_arc, ""},
           {fil, ""},
@@ -197,7 +203,7 @@ BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& ge
   const double merge = 1e-9 * g.tip_radius;
   // Two tooth shapes at most: built once, the flank names set per tooth.
   const std::vector<Piece> fine_tooth = pinion_tooth_pieces(pinion, g, spacing, 0);
-  const std::vector<Piece> coarse_tooth = graded ? pinion_tooth_pieces(pinion, g, coarse, 0) : fine_tooth;
+  const std::vector<Piece> coarse_tooth = graded ? pinion_tooth_pieces(pinion, g, coarse, 0, kMinCoarseCurvePoints) : fine_tooth;
   for (int k = 0; k < pinion.teeth; ++k) {
     std::vector<Piece> pieces = !graded || contains(focus_teeth, k) ? fine_tooth : coarse_tooth;
     const std::string t = "T" + std::to_string(k);
@@ -212,7 +218,8 @@ BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& ge
     out.outer.edge_names.pop_back();
   }
   if (bore_radius > 0) {
-    const int n = std::max(kMinBoreSides, static_cast<int>(std::ceil(2 * M_PI * bore_radius / coarse)));
+    const int n = std::max(graded ? kMinCoarseBoreSides : kMinBoreSides,
+                             static_cast<int>(std::ceil(2 * M_PI * bore_radius / coarse)));
     Polygon2D bore;
     for (int i = 0; i < n; ++i) {
       const double a = 2 * M_PI * i / n;
