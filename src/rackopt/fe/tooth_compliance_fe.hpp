@@ -1,6 +1,6 @@
 // Single-tooth compliances by FE, with the definition the analytic tooth
 // models are compared under: the pinion (whole gear, bore fixed) or a rack
-// segment (base fixed) alone, a unit normal load at the contact of LOA
+// segment (base fixed) alone, the drive's normal load at the contact of LOA
 // coordinate s spread over a Hertz-sized patch (a point load has a
 // log-infinite displacement under it), and the displacement read where the
 // load line crosses the loaded tooth's centre line, along the load line.
@@ -23,6 +23,7 @@ struct ToothComplianceFe {
   Point2 read_point;         // where the displacement is read [m]
   double analytic = 0;       // the analytic tooth model's compliance under the same definition
   double hertz_half_width = 0;  // b_H of the loaded patch [m]
+  int rack_teeth = 0;           // rack: teeth of the FE segment (the loaded one in the middle); pinion: 0
   int nodes = 0, elements = 0;
   double seconds = 0;        // wall time of mesh + solve
 };
@@ -36,9 +37,13 @@ struct ToothComplianceFe {
 //   sqrt(r_b^2 + s^2), into the tooth along the flank normal (the line of
 //   action, tangent to the base circle); the read point is where that line
 //   crosses the tooth's centre line (the y axis).
-//   Rack: a segment of 3 teeth (rack_segment_outline, root rounds of
-//   RackSpec.root_radius) on a body of options.rack_body_depth, BASE held;
-//   the middle tooth's -x flank is loaded along F (cos a0, -sin a0), as the
+//   Rack: a segment (rack_segment_outline, root rounds of
+//   RackSpec.root_radius) on a body of depth H = options.rack_body_depth,
+//   BASE held, its cut ends free; 2 k + 1 teeth, k = max(1, ceil(3 H / p)),
+//   so that the ends lie 3 body depths beyond the loaded middle tooth (a
+//   shorter segment deforms as a block: 3 teeth on the gantry axis's body
+//   read 1.8 times the converged compliance), meshed at the level's size on
+//   the middle tooth. The middle tooth's -x flank is loaded along F (cos a0, -sin a0), as the
 //   drive loads the rack (core/drive.hpp), at the height
 //   MeshGeometry::contact_height_above_datum(s); the read point is where the
 //   load line crosses that tooth's centre line.
