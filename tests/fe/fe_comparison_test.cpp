@@ -166,6 +166,29 @@ TEST(FeComparison, ErrorsAreAnalyticMinusFeOverFeAndMatchAnIndependentAnalyticMo
   }
 }
 
+// The analytic compliances the comparison takes from the mesh model equal
+// the single-tooth analytic of the FE's own definition (another path through
+// the tooth models: fe/tooth_compliance_fe.hpp).
+TEST(FeComparison, AnalyticCompliancesAgreeWithTheSingleToothDefinition) {
+  Fake f;
+  FeComparisonOptions opt;
+  opt.positions = 4;
+  opt.calls = f.calls();
+  for (const char* problem : {"gantry_axis", "rack_railway"}) {
+    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + problem + ".yaml");
+    const FeComparison c = compare_with_fe(d, opt);
+    const Drive ref = fe_reference_drive(d);
+    for (const ComparedPosition& r : c.rows) {
+      for (const ComparedPair& p : r.pairs) {
+        const double pin = analytic_tooth_compliance(ref, ToothMember::kPinion, p.s);
+        const double rack = analytic_tooth_compliance(ref, ToothMember::kRack, p.s);
+        EXPECT_NEAR(p.pinion_analytic, pin, 1e-3 * pin) << problem << " s = " << p.s;
+        EXPECT_NEAR(p.rack_analytic, rack, 1e-3 * rack) << problem << " s = " << p.s;
+      }
+    }
+  }
+}
+
 TEST(FeComparison, ResultsDoNotDependOnTheThreadCount) {
   const Drive d = gantry();
   Fake a, b;
