@@ -7,6 +7,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 
 #include "rackopt/fe/ccx_contact_deck.hpp"
 #include "rackopt/fe/ccx_dat.hpp"
@@ -67,6 +69,33 @@ TEST(ContactPipeline, MissingCcxIsCcxNotFound) {
   CcxOptions o;
   o.program = "/nonexistent/ccx";
   EXPECT_THROW(solve_contact(m, o), CcxNotFound);
+}
+
+TEST(ContactPipeline, NonConvergenceIsCcxErrorWithTheDeckKept) {
+  namespace fs = std::filesystem;
+  std::string folder = (fs::temp_directory_path() / "rackopt-fe-test-XXXXXX").string();
+  ASSERT_NE(::mkdtemp(folder.data()), nullptr);
+  ContactModel m;
+  m.bodies.push_back({"LOW", mesh_rectangle(0, 0, kW, kH1, kH1 / 2), kE1, 0.3});
+  m.bodies.push_back({"UP", mesh_rectangle(0, kH1, kW, kH2, kH2 / 2), kE2, 0.25});
+  for (int n : m.bodies[0].mesh.node_set("BOTTOM")) m.supports.push_back({0, n, 2, {0}});
+  m.supports.push_back({0, m.bodies[0].mesh.node_set("BOTTOM_LEFT")[0], 1, {0}});
+  for (int n : m.bodies[1].mesh.node_set("TOP")) m.supports.push_back({1, n, 2, {-1e-6}});
+  m.supports.push_back({1, m.bodies[1].mesh.node_set("TOP_LEFT")[0], 1, {0}});
+  m.contacts.push_back({1, "BOTTOM", 0, "TOP"});
+  m.penalty_slope = 1e29 * kE2 / kH2;  // far beyond what the Newton iteration can follow
+  m.reaction_sets = {{0, "BOTTOM"}};
+  CcxOptions o;
+  o.work_parent = folder;
+  try {
+    solve_contact(m, o);
+    ADD_FAILURE() << "the solve converged";
+  } catch (const CcxError& e) {
+    EXPECT_TRUE(fs::exists(e.deck())) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cutbacks"), std::string::npos) << e.what();
+  }
+  std::error_code ec;
+  fs::remove_all(folder, ec);
 }
 
 TEST(CcxDat, ReadsContactStatistics) {

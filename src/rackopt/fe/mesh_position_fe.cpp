@@ -65,6 +65,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
 
   const MeshPlacement pl =
       place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2}, depth, options.extended_contact);
+  find_ccx(options.ccx);  // CcxNotFound after the design checks, before the meshing
   std::vector<Refinement> refs;
   for (const FlankContact& c : pl.contacts) {
     // The loaded tooth pair with its fillets at the level's size, the contact finer.
