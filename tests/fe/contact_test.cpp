@@ -135,6 +135,34 @@ TEST(CcxDat, ReadsContactStatistics) {
   const std::vector<DatBlock> blocks = parse_ccx_dat(dat, "job.dat");
   ASSERT_EQ(blocks.size(), 1u);
   EXPECT_EQ(blocks[0].rows.size(), 1u);
+  // A pair out of contact: zero area and force, NaN centre; a NaN force is an error.
+  const char* apart = R"(
+ statistics for slave set C1S, master set C1M and time  0.2000000E+01
+
+   total surface force (fx,fy,fz) and moment about the origin (mx,my,mz)
+
+    0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00  0.000000E+00
+
+   center of gravity and mean normal
+
+             NaN           NaN           NaN           NaN           NaN           NaN
+
+   moment about the center of gravity(mx,my,mz)
+
+             NaN           NaN           NaN
+
+   area,  normal force (+ = tension) and shear force (size)
+
+    0.000000E+00           NaN           NaN
+)";
+  const std::vector<ContactStatistics> a = parse_ccx_contact_statistics(apart, "job.dat");
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].area, 0);
+  EXPECT_EQ(a[0].force[0], 0);
+  EXPECT_EQ(a[0].normal_force, 0);
+  std::string diverged = apart;
+  diverged.replace(diverged.find("0.000000E+00"), 12, "NaN");
+  EXPECT_THROW(parse_ccx_contact_statistics(diverged, "job.dat"), std::runtime_error);
   // A truncated section is an error.
   EXPECT_THROW(parse_ccx_contact_statistics(std::string(dat).substr(0, std::string(dat).size() - 60), "job.dat"),
                std::runtime_error);

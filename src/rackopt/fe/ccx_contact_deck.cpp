@@ -201,7 +201,7 @@ std::vector<ContactStepResult> solve_contact(const ContactModel& m, const CcxOpt
             for (const ContactStatistics& c : stats) {
               if (upper(c.slave) == slave && upper(c.master) == master && at_end(c.time, step)) found = &c;
             }
-            r.in_contact.push_back(found != nullptr);
+            r.in_contact.push_back(found != nullptr && found->area > 0);
             r.contact_force.push_back(found ? Point2{found->force[0] / t, found->force[1] / t} : Point2{});
           }
         }

@@ -31,14 +31,15 @@ struct DatBlock {
 //   surface force and its moment about the origin (6 numbers), the centre of
 //   gravity and mean normal (6), the moment about the centre of gravity (3),
 //   and area, normal force (+ = tension) and shear force (3).
-// A pair with no contact at that time has no statistics.
+// A pair with no contact at that time has zero area and force (its centre
+// and mean normal are then NaN), or no statistics at all.
 struct ContactStatistics {
   std::string slave;
   std::string master;
   double time = 0;
   std::array<double, 3> force{};   // total surface force (fx, fy, fz)
   std::array<double, 3> moment{};  // its moment about the origin
-  std::array<double, 3> centre{};  // centre of gravity of the contact
+  std::array<double, 3> centre{};  // centre of gravity of the contact (NaN without contact)
   double area = 0;
   double normal_force = 0;         // + = tension
   double shear_force = 0;
