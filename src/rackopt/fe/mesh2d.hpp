@@ -20,6 +20,13 @@ struct Point2 {
 // of CalculiX's CPS6 and Gmsh's 6-node triangle alike.
 using Triangle6 = std::array<int, 6>;
 
+// A point located in a mesh: the triangle holding it and its barycentric
+// (area) coordinates there, weights of corners 0, 1, 2 (summing to 1).
+struct MeshLocation {
+  int triangle = -1;
+  std::array<double, 3> barycentric{};
+};
+
 // Nodes, triangles and named node sets (a boundary edge's or a vertex's
 // nodes, by the names the mesher was given). Set names are what the deck
 // uses: letters, digits and '_' only, at most 60 characters, unique without
@@ -38,6 +45,20 @@ struct Mesh2D {
   double area() const;
   // Longest corner-to-corner edge of any triangle (the mesh size h).
   double largest_edge() const;
+
+  // The triangle holding `p`. The triangles are straight-sided (mid-side
+  // nodes on the chords, as the mesher makes them), so the barycentric
+  // coordinates are the element's exact natural coordinates. A point on an
+  // edge shared by two triangles (within 1e-9 of the triangle's size) gets
+  // either. Throws std::out_of_range naming the point (in mm) when it lies
+  // outside every triangle. A linear search: for a few points per solve.
+  MeshLocation locate(Point2 p) const;
+  // `field` (one value per node) at `p`, by the 6-node triangle's quadratic
+  // shape functions (corners L_i (2 L_i - 1), mid-sides 4 L_i L_j): exact
+  // for a field quadratic in x and y. Throws std::invalid_argument when the
+  // field's size is not the node count, and as locate() does.
+  Point2 interpolate(const std::vector<Point2>& field, Point2 p) const;
+  double interpolate(const std::vector<double>& field, Point2 p) const;
 };
 
 // Throws std::invalid_argument when `name` is not a valid set name (above).
