@@ -163,8 +163,16 @@ MeshPlacement place_mesh(const Drive& drive, const MeshStiffnessModel& model, do
 
   // Outlines in their own frames, the loaded flanks redrawn with a vertex at
   // each contact.
-  out.pinion = pinion_body_outline(pin, geo, out.bore_radius, spacing.outline);
-  out.rack = rack_segment_outline(geo, out.rack_teeth, rack_body_depth);
+  // The pinion's teeth in and next to the mesh at spacing.outline, the
+  // others at spacing.far (their shape matters little here).
+  for (int j = j_lo - 1; j <= j_hi + 1; ++j) {
+    if (std::find(out.focus_pinion_teeth.begin(), out.focus_pinion_teeth.end(), mod_z(j)) == out.focus_pinion_teeth.end()) {
+      out.focus_pinion_teeth.push_back(mod_z(j));
+    }
+  }
+  out.pinion = pinion_body_outline(pin, geo, out.bore_radius, spacing.outline, out.focus_pinion_teeth,
+                                   std::max(spacing.far, spacing.outline));
+  out.rack = rack_segment_outline(geo, out.rack_teeth, rack_body_depth, drive.rack.root_radius);
   for (const FlankContact& c : out.contacts) {
     // Pinion: along the involute by arc length from the base circle, L = s^2 / (2 r_b).
     Polygon2D& P = out.pinion.outer;

@@ -40,6 +40,7 @@ struct PlacementSpacing {
   double outline = 0;  // point spacing of the outlines away from the contacts [m]
   double contact = 0;  // point spacing at the theoretical contacts [m] (<= outline)
   double growth = 0.25;  // the spacing grows by this fraction of the distance from the contact
+  double far = 0;        // point spacing of the pinion teeth not in or next to the mesh [m] (<= outline: outline)
 };
 
 struct MeshPlacement {
@@ -51,6 +52,7 @@ struct MeshPlacement {
   int rack_teeth = 0;           // teeth in the segment
   double rack_body_depth = 0;   // below the root line [m]
   double bore_radius = 0;       // of the pinion outline [m]
+  std::vector<int> focus_pinion_teeth;  // the pinion teeth in mesh and one each side
   Point2 loa_direction;         // n = (cos a0, -sin a0): the mesh force on the rack
   BodyOutline pinion;           // both outlines in the global frame
   BodyOutline rack;
@@ -63,7 +65,8 @@ struct MeshPlacement {
 // Places the bodies of `drive` at travel X. `model` is the analytic model of
 // the same drive (its geometry and its pairs at X). The rack segment holds
 // every pair in mesh plus one tooth each side; its body is `rack_body_depth`
-// deep below the root line (> 0). The pinion's bore is drive.pinion.bore_radius
+// deep below the root line (> 0), its root corners rounded by
+// drive.rack.root_radius as rack_segment_outline does. The pinion's bore is drive.pinion.bore_radius
 // (0: half the root radius, the loader's default). Each theoretical contact
 // is a vertex of both outlines, the loaded flanks of the pairs in mesh are
 // drawn at spacing.contact there, graded to spacing.outline. Throws

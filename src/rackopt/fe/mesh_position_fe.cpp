@@ -64,13 +64,22 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   const double far = 8 * h;
 
   const MeshPlacement pl =
-      place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2}, depth, options.extended_contact);
+      place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2, far / 2}, depth, options.extended_contact);
   find_ccx(options.ccx);  // CcxNotFound after the design checks, before the meshing
+  const Point2 o = pl.pinion_centre;
+  // The teeth in contact (and the neighbours that may touch) with their
+  // fillets and roots at the level's size (gear_bodies' focus discs,
+  // placed), the contacts finer.
   std::vector<Refinement> refs;
-  for (const FlankContact& c : pl.contacts) {
-    // The loaded tooth pair with its fillets at the level's size, the contact finer.
-    refs.push_back({c.contact, 1.5 * m, h});
-    if (c.theoretical) contact_discs(refs, c.contact, h_c, h);
+  const double cr = std::cos(pl.pinion_rotation), sr = std::sin(pl.pinion_rotation);
+  for (const FlankContact& fc : pl.contacts) {
+    Refinement r = pinion_focus_disc(drive.pinion, geo, fc.pinion_tooth, h);
+    r.center = {o.x + r.center.x * cr - r.center.y * sr, o.y + r.center.x * sr + r.center.y * cr};
+    refs.push_back(r);
+    r = rack_focus_disc(geo, fc.rack_tooth - pl.first_rack_tooth, h);
+    r.center.x += pl.rack_shift;
+    refs.push_back(r);
+    if (fc.theoretical) contact_discs(refs, fc.contact, h_c, h);
   }
   ContactModel cm;
   cm.bodies.push_back({"P", mesh_polygon_with_holes(pl.pinion.outer, pl.pinion.holes, far, refs),
@@ -84,7 +93,6 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   // (rigid-body) stiffness, theta1 at a fifth of it.
   const double theta2 = drive.load.force / analytic.stiffness / rb, theta1 = 0.2 * theta2;
   cm.steps = 2;
-  const Point2 o = pl.pinion_centre;
   for (int n : pinion.node_set("BORE")) {
     const Point2 p = pinion.nodes[n];
     cm.supports.push_back({0, n, 1, {-theta1 * (p.y - o.y), -theta2 * (p.y - o.y)}});
