@@ -194,8 +194,9 @@ TEST(GearBodies, GradedPinionIsFineOnlyOnItsFocusTeeth) {
   double polygon_area = shoelace_area(o.outer);
   for (const Polygon2D& h : o.holes) polygon_area -= std::abs(shoelace_area(h));
   EXPECT_NEAR(graded.area(), polygon_area, 1e-9 * polygon_area);
+  // The far teeth's curves may be as coarse as 2 chords: 2.3e-3 of the area.
   const double expected = pinion_outline_area(d.pinion, g) - M_PI * bore * bore;
-  EXPECT_NEAR(graded.area(), expected, 2e-3 * expected);
+  EXPECT_NEAR(graded.area(), expected, 5e-3 * expected);
   EXPECT_LT(graded.triangles.size(), full.triangles.size() / 3);
   // The focus teeth keep the level's size and their flank spacing; a far tooth is coarse.
   for (int k : grading.focus_teeth) {

@@ -30,8 +30,10 @@ struct MeshGrading {
   // 0..teeth-1): a disc of that size over each, growing to the coarse size
   // over a further disc radius (so the neighbours' near flanks are finer
   // too). Elsewhere the body takes the coarse size
-  // min(coarse_factor * size, module), and the pinion's outline points away
-  // from the focus teeth are spaced at half of it. Empty: no grading.
+  // min(coarse_factor * size, module), and the pinion's outline away from the
+  // focus teeth is spaced at half of it (at least 2 chords per curve, the
+  // bore a polygon of at least 72 sides). Empty: no grading. A
+  // coarse_factor below 1 throws std::invalid_argument.
   std::vector<int> focus_teeth;
   double coarse_factor = 4;
   // Extra discs of finer mesh (loaded patches, read points), passed to the
@@ -67,7 +69,8 @@ double gear_element_size(double module, int level);
 // (no rim left), std::invalid_argument for a negative or non-finite bore or
 // a non-positive spacing. No Gmsh work is done here.
 // With `focus_teeth` given, only those teeth take `spacing`; the others (and
-// the bore) take `other_spacing` (0: `spacing`). A focus tooth index outside
+// the bore) take `other_spacing` (0: `spacing`) with at least 2 intervals per
+// curve piece and 72 bore sides. A focus tooth index outside
 // 0..z-1 throws std::invalid_argument.
 BodyOutline pinion_body_outline(const PinionSpec& pinion, const MeshGeometry& geometry, double bore_radius,
                                 double spacing, const std::vector<int>& focus_teeth = {}, double other_spacing = 0);
