@@ -43,7 +43,7 @@ std::vector<DatBlock> parse_ccx_dat(const std::string& text, const std::string& 
   std::istringstream in(text);
   std::string line;
   int line_no = 0;
-  enum class Expect { none, rows, total } expect = Expect::none;
+  enum class Expect { none, rows, total, statistics } expect = Expect::none;
   const auto fail = [&](const std::string& what) {
     throw std::runtime_error(file_name + ":" + std::to_string(line_no) + ": " + what);
   };
@@ -51,6 +51,10 @@ std::vector<DatBlock> parse_ccx_dat(const std::string& text, const std::string& 
     ++line_no;
     const std::vector<std::string> w = words(line);
     if (w.empty()) continue;
+    if (line.find("statistics for slave set ") != std::string::npos) {
+      expect = Expect::statistics;  // read by parse_ccx_contact_statistics
+      continue;
+    }
     // Header: "<quantity words> (a,b,c) for set NAME and time T"
     const auto for_at = line.find(" for set ");
     if (for_at != std::string::npos) {
@@ -77,6 +81,7 @@ std::vector<DatBlock> parse_ccx_dat(const std::string& text, const std::string& 
       expect = Expect::rows;
       continue;
     }
+    if (expect == Expect::statistics) continue;
     if (expect == Expect::none) fail("data outside any block: " + line);
     std::array<double, 3> v{};
     const std::size_t first = expect == Expect::total ? 0 : 1;
@@ -97,6 +102,83 @@ std::vector<DatBlock> parse_ccx_dat(const std::string& text, const std::string& 
     }
   }
   return blocks;
+}
+
+std::vector<ContactStatistics> parse_ccx_contact_statistics(const std::string& text, const std::string& file_name) {
+  std::vector<ContactStatistics> out;
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  std::vector<double> numbers;  // of the current section
+  bool open = false;
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error(file_name + ":" + std::to_string(line_no) + ": " + what);
+  };
+  const auto close = [&]() {
+    if (!open) return;
+    if (numbers.size() != 18) fail("contact statistics with " + std::to_string(numbers.size()) + " numbers, not 18");
+    ContactStatistics& c = out.back();
+    for (int k = 0; k < 3; ++k) {
+      c.force[k] = numbers[k];
+      c.moment[k] = numbers[3 + k];
+      c.centre[k] = numbers[6 + k];
+    }
+    c.area = numbers[15];
+    c.normal_force = numbers[16];
+    c.shear_force = numbers[17];
+    if (c.area == 0) {
+      c.normal_force = c.shear_force = 0;
+    } else if (!std::isfinite(c.normal_force) || !std::isfinite(c.shear_force)) {
+      fail("non-finite contact force with contact area " + std::to_string(c.area) + " (the solve diverged?)");
+    }
+    open = false;
+  };
+  while (std::getline(in, line)) {
+    ++line_no;
+    const auto at = line.find("statistics for slave set ");
+    if (at != std::string::npos) {
+      close();
+      // "statistics for slave set S, master set M and time T"
+      const auto master_at = line.find(", master set ", at);
+      const auto time_at = line.find(" and time ", at);
+      if (master_at == std::string::npos || time_at == std::string::npos || time_at < master_at) {
+        fail("unreadable contact statistics header: " + line);
+      }
+      ContactStatistics c;
+      const std::vector<std::string> slave = words(line.substr(at + 25, master_at - at - 25));
+      const std::vector<std::string> master = words(line.substr(master_at + 13, time_at - master_at - 13));
+      const std::vector<std::string> t = words(line.substr(time_at + 10));
+      if (slave.size() != 1 || master.size() != 1 || t.size() != 1 || !parse_number(t[0], c.time)) {
+        fail("unreadable contact statistics header: " + line);
+      }
+      c.slave = slave[0];
+      c.master = master[0];
+      out.push_back(c);
+      numbers.clear();
+      open = true;
+      continue;
+    }
+    if (!open) continue;
+    if (line.find(" for set ") != std::string::npos) {  // the next ordinary block
+      close();
+      continue;
+    }
+    const std::vector<std::string> w = words(line);
+    if (w.empty()) continue;
+    double v = 0;
+    if (!parse_number(w[0], v)) continue;  // a caption line
+    for (const std::string& x : w) {
+      if (!parse_number(x, v)) fail("not a number '" + x + "': " + line);
+      // A pair without contact has zero area: its centre of gravity, mean
+      // normal, the moment about it and its normal and shear force (per
+      // area) come out 0/0 (NaN). The total force and the area must be finite.
+      const std::size_t k = numbers.size();
+      if (!std::isfinite(v) && (k < 6 || k == 15)) fail("non-finite value (the solve diverged?): " + line);
+      numbers.push_back(v);
+    }
+  }
+  close();
+  return out;
 }
 
 const DatBlock& find_dat_block(const std::vector<DatBlock>& blocks, const std::string& quantity,

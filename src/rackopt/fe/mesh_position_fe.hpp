@@ -37,4 +37,18 @@ struct FePosition {
 // solve (non-convergence included: the deck is kept).
 FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& options = {});
 
+// Knobs of the solve that are fixed in normal use, open for the checks that
+// the results do not depend on them (docs/models/fe_reference.md, "Mesh
+// positions").
+struct MeshPositionTuning {
+  // Contact penalty slope = penalty_factor * E* / (element size at the
+  // contacts) [Pa/m]: the overclosure at the Hertz peak pressure is then
+  // about F'/(pi penalty_factor E*), some 1e-3 of the mesh deflection at 30.
+  double penalty_factor = 30;
+};
+
+// fe_mesh_position with explicit tuning.
+FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& options,
+                            const MeshPositionTuning& tuning);
+
 }  // namespace rackopt::fe

@@ -1,0 +1,96 @@
+// The mesh at a travel position by FE, on a small drive (the gantry axis
+// with 14 teeth, shifted +0.3 against undercut, on a 12 mm rack body) at
+// level 0: the invariants (K > 0, shares summing to 1 from the pairs' own
+// contact forces, K periodic over one pitch of travel), the penalty slope's
+// insensitivity, and K against the analytic model with a rigid rack body
+// (reported, bounded loosely: their agreement is not asserted here).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/fe/mesh_position_fe.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace rackopt::fe {
+namespace {
+
+Drive small_drive(const std::vector<std::string>& more = {}) {
+  std::vector<std::string> set = {"pinion.teeth=14", "pinion.profile_shift=0.3", "rack.body_height=12 mm"};
+  set.insert(set.end(), more.begin(), more.end());
+  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml", set);
+}
+
+double share_sum(const FePosition& p) {
+  double s = 0;
+  for (const FePair& q : p.pairs) s += q.load_share;
+  return s;
+}
+
+TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
+  const Drive d = small_drive();
+  const double pitch = M_PI * d.pinion.module;
+  const double X = 0.31 * pitch;
+  Drive rigid = d;
+  rigid.effects.rack_span = RackSpanModel::kRigid;
+  const MeshState analytic = MeshStiffnessModel(rigid).at(X);
+
+  const FePosition a = fe_mesh_position(d, X);
+  const FePosition b = fe_mesh_position(d, X + pitch);
+  for (const FePosition* p : {&a, &b}) {
+    EXPECT_GT(p->stiffness, 0);
+    EXPECT_GT(p->force, 0);
+    ASSERT_EQ(p->pairs.size(), analytic.pairs.size());
+    // Each pair's share from its own contact force; their sum is not forced.
+    EXPECT_NEAR(share_sum(*p), 1.0, 1e-3);
+    for (std::size_t k = 0; k < p->pairs.size(); ++k) {
+      EXPECT_TRUE(p->pairs[k].theoretical);
+      EXPECT_GT(p->pairs[k].load_share, 0);
+      EXPECT_NEAR(p->pairs[k].s, analytic.pairs[k].s, 1e-12);
+    }
+  }
+  // One pitch of travel later the same teeth pattern is in mesh, one tooth on.
+  EXPECT_EQ(b.pairs.front().rack_tooth, a.pairs.front().rack_tooth + 1);
+  EXPECT_NEAR(b.stiffness / a.stiffness, 1.0, 5e-3);
+  for (std::size_t k = 0; k < a.pairs.size(); ++k) EXPECT_NEAR(b.pairs[k].load_share, a.pairs[k].load_share, 5e-3);
+
+  // Doubling the penalty slope moves K by less than 0.1 %.
+  MeshPositionTuning stiffer;
+  stiffer.penalty_factor *= 2;
+  const FePosition c = fe_mesh_position(d, X, FeOptions{}, stiffer);
+  EXPECT_LT(std::abs(c.stiffness / a.stiffness - 1), 1e-3);
+
+  const double ratio = a.stiffness / analytic.stiffness;
+  std::printf("[ FE mesh  ] K_fe %.4g N/m, K_analytic(rigid rack) %.4g N/m, ratio %.3f; shares sum - 1: %.1e; "
+              "periodic: %.1e; penalty x2: %.1e; %d elements, %.1f s\n",
+              a.stiffness, analytic.stiffness, ratio, share_sum(a) - 1, b.stiffness / a.stiffness - 1,
+              c.stiffness / a.stiffness - 1, a.elements, a.seconds);
+  EXPECT_GT(ratio, 0.3);
+  EXPECT_LT(ratio, 3.0);
+}
+
+TEST(MeshPositionFe, MissingCcxIsCcxNotFound) {
+  FeOptions o;
+  o.ccx.program = "/nonexistent/ccx";
+  EXPECT_THROW(fe_mesh_position(small_drive(), 0.003, o), CcxNotFound);
+}
+
+TEST(MeshPositionFe, ImpossibleBodyIsADesignErrorBeforeAnyFeWork) {
+  // A bore beyond the root circle: refused before ccx is even looked for.
+  FeOptions o;
+  o.ccx.program = "/nonexistent/ccx";
+  Drive d = small_drive();
+  d.pinion.bore_radius = d.pinion.module * d.pinion.teeth;  // beyond the pitch radius
+  try {
+    fe_mesh_position(d, 0.003, o);
+    ADD_FAILURE() << "no error";
+  } catch (const DesignError& e) {
+    EXPECT_NE(e.code().find("bore"), std::string::npos) << e.code();
+  }
+}
+
+}  // namespace
+}  // namespace rackopt::fe
