@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -126,6 +127,70 @@ TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
   EXPECT_EQ(b.code, 2) << b.out;
   EXPECT_NE(b.out.find("verify_study.yaml:3:29"), std::string::npos) << b.out;
   EXPECT_NE(b.out.find("verify.level"), std::string::npos) << b.out;
+}
+
+// The real solves, at the coarsest level on the smallest shipped drive, two
+// positions: the files are there and whole, K of both codes is positive, the
+// errors are what the numbers in the files say, and nothing is left behind.
+TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
+  const std::string dir = tmp_dir("real");
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --level 0 --threads 2 --json --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  std::ifstream in(dir + "/fe.json");
+  std::stringstream file;
+  file << in.rdbuf();
+  EXPECT_EQ(nlohmann::json::parse(file.str()), j);
+  ASSERT_EQ(j["positions"].size(), 2u);
+  for (const auto& p : j["positions"]) {
+    const double fe = p["k_fe"].get<double>(), an = p["k_analytic"].get<double>();
+    EXPECT_GT(fe, 0);
+    EXPECT_GT(an, 0);
+    EXPECT_NEAR(p["k_error"].get<double>(), (an - fe) / fe, 1e-12 * std::abs((an - fe) / fe) + 1e-15);
+    ASSERT_FALSE(p["pairs"].empty());
+    double shares = 0;
+    for (const auto& q : p["pairs"]) {
+      EXPECT_GT(q["pinion_fe"].get<double>(), 0);
+      EXPECT_GT(q["rack_fe"].get<double>(), 0);
+      shares += q["share_fe"].get<double>();
+    }
+    EXPECT_NEAR(shares, 1.0, 0.02);  // no extended contact asked for
+  }
+  EXPECT_GT(j["summary"]["time_ratio"].get<double>(), 1.0);
+  std::ifstream csv(dir + "/fe.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("travel_m,k_fe_N_per_m,k_analytic_N_per_m,k_error,", 0), 0u);
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 2);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/fe_stiffness.gp"));
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+// A solve that fails: exit 1 with the solver's own message and the kept
+// deck, no result file.
+TEST(FeCli, AFailingSolverIsExitOneWithItsMessageAndTheKeptDeck) {
+  const std::string dir = tmp_dir("ccx_fails");
+  std::filesystem::create_directories(tmp_root());
+  const std::string fake = (tmp_root() / "fake_ccx").string();
+  std::ofstream(fake) << "#!/bin/sh\necho ' *ERROR in fake_ccx: the matrix is singular'\nexit 201\n";
+  std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+  const std::string work = (tmp_root() / "ccx_work").string();
+  std::filesystem::create_directories(work);
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 1 --threads 1 --json --out " + dir, false,
+                          "RACKOPT_CCX=" + fake + " TMPDIR=" + work);
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto o = nlohmann::json::parse(r.out);
+  EXPECT_EQ(o["error"], "fe_solver");
+  const std::string msg = o["message"].get<std::string>();
+  EXPECT_NE(msg.find("the matrix is singular"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("job.inp"), std::string::npos) << msg;
+  for (const char* f : {"fe.csv", "fe.json", "fe_stiffness.png", "fe_stiffness.gp"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << f;
+  }
 }
 
 }  // namespace
