@@ -1,5 +1,6 @@
 // The mesh at one travel position by FE: the whole pinion (bore driven by a
-// rigid hub rotation) in contact with a rack segment (base fixed), solved by
+// rigid hub rotation) in contact with a rack segment (base fixed; or, with
+// FeOptions::rack_on_supports, the whole span on its hinges), solved by
 // CalculiX with penalty contact in two load steps; the mesh stiffness is the
 // secant between them, so an initial micro-gap does not enter it.
 #pragma once
@@ -45,6 +46,9 @@ struct MeshPositionTuning {
   // contacts) [Pa/m]: the overclosure at the Hertz peak pressure is then
   // about F'/(pi penalty_factor E*), some 1e-3 of the mesh deflection at 30.
   double penalty_factor = 30;
+  // FeOptions::rack_on_supports: half height of each hinge patch as a
+  // fraction of the rack body depth (fe/rack_span_fe.hpp).
+  double hinge_patch_fraction = 0.1;
 };
 
 // fe_mesh_position with explicit tuning.
