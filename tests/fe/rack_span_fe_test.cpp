@@ -122,32 +122,33 @@ double share_sum(const FePosition& p) {
   return s;
 }
 
-TEST(RackSpanFe, MeshPositionOnTheSupportsAtMidSpanAndNearAHinge) {
+// One position at mid-span (two ccx contact solves, the longest part of the
+// suite here); the same checks near a hinge and on shipped problems are in
+// rack_supports_table_test.cpp (a command, docs/models/fe_reference.md).
+TEST(RackSpanFe, MeshPositionOnTheSupportsAtMidSpan) {
   const Drive d = small_span_drive();
   const double pitch = M_PI * d.pinion.module;
   FeOptions on;
   on.rack_on_supports = true;
   const MeshStiffnessModel coupled(rack_on_supports_drive(d, on));
-  const MeshStiffnessModel rigid(fe_reference_drive(d));
-  // Mid-span, and the pitch point 2.81 pitches from the left hinge (the
-  // pairs' teeth and one each side still on the span's teeth).
-  const double X_mid = 0.5 * d.rack.span + 0.31 * pitch, X_hinge = 2.81 * pitch;
-  const FePosition held = fe_mesh_position(d, X_mid);
-  for (double X : {X_mid, X_hinge}) {
-    const FePosition p = fe_mesh_position(d, X, on);
-    const MeshState an = coupled.at(X);
-    std::printf("  X = %.4f m: K FE on supports %.4e N/m, analytic coupled %.4e (FE/analytic %.3f), FE base held "
-                "%.4e, analytic rigid %.4e; %d elements, %.1f s\n",
-                X, p.stiffness, an.stiffness, p.stiffness / an.stiffness, held.stiffness, rigid.at(X).stiffness,
-                p.elements, p.seconds);
-    EXPECT_LT(p.stiffness, held.stiffness);
-    EXPECT_GT(p.stiffness, 0);
-    ASSERT_EQ(p.pairs.size(), an.pairs.size());
-    EXPECT_NEAR(share_sum(p), 1.0, 2e-3);
-    // A sanity bound only: the agreement is measured in the docs.
-    EXPECT_GT(p.stiffness / an.stiffness, 0.3);
-    EXPECT_LT(p.stiffness / an.stiffness, 3.0);
-  }
+  const double X = 0.5 * d.rack.span + 0.31 * pitch;
+  const FePosition held = fe_mesh_position(d, X);
+  const FePosition p = fe_mesh_position(d, X, on);
+  const MeshState an = coupled.at(X);
+  std::printf("  X = %.4f m (a = %.4f m): K FE on supports %.4e N/m, analytic coupled %.4e (FE/analytic %.3f); FE base "
+              "held %.4e; %d elements, %.1f s\n",
+              X, an.pairs.front().a, p.stiffness, an.stiffness, p.stiffness / an.stiffness, held.stiffness, p.elements,
+              p.seconds);
+  EXPECT_GT(p.stiffness, 0);
+  EXPECT_LT(p.stiffness, 0.5 * held.stiffness);  // the 12 mm body on 0.2 m bends far more than the teeth
+  ASSERT_EQ(p.pairs.size(), an.pairs.size());
+  // Each pair's share from its own contact force against the hub torque:
+  // within ccx's residual tolerance (0.5 % of the mean force by default).
+  EXPECT_NEAR(share_sum(p), 1.0, 5e-3);
+  for (std::size_t k = 0; k < p.pairs.size(); ++k) EXPECT_NEAR(p.pairs[k].s, an.pairs[k].s, 1e-12);
+  // A sanity bound only: the agreement is measured in the docs.
+  EXPECT_GT(p.stiffness / an.stiffness, 0.3);
+  EXPECT_LT(p.stiffness / an.stiffness, 3.0);
 }
 
 TEST(RackSpanFe, PositionTooNearAHingeOrAcrossAJointIsRefused) {
