@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "rackopt/fe/ccx_deck.hpp"
 #include "rackopt/fe/edge_loads.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
@@ -158,6 +159,48 @@ TEST(RackSpanFe, PositionTooNearAHingeOrAcrossAJointIsRefused) {
   on.ccx.program = "/nonexistent/ccx";  // refused before any solve
   EXPECT_THROW(fe_mesh_position(d, 0.31 * M_PI * d.pinion.module, on), std::invalid_argument);
   EXPECT_THROW(fe_mesh_position(d, d.rack.span, on), std::invalid_argument);
+}
+
+TEST(RackSpanFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
+  FeOptions on;
+  on.rack_on_supports = true;
+  // The gantry rack is a rectangular body as wide as the teeth: its own section.
+  const Drive g = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml");
+  const Drive gs = fe_reference_drive(g, on);
+  EXPECT_EQ(gs.effects.rack_span, RackSpanModel::kCoupled);
+  EXPECT_NEAR(gs.rack.section.second_moment / g.rack.section.second_moment, 1.0, 1e-12);
+  EXPECT_NEAR(gs.rack.section.area / g.rack.section.area, 1.0, 1e-12);
+  EXPECT_NEAR(gs.rack.section.neutral_axis_depth / g.rack.section.neutral_axis_depth, 1.0, 1e-12);
+  EXPECT_EQ(fe_reference_drive(g, FeOptions{}).effects.rack_span, RackSpanModel::kRigid);
+  // A problem with a rigid rack body still gets the coupled beam, and a
+  // deeper FE body its own section.
+  const Drive lm = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/large_module.yaml");
+  ASSERT_EQ(lm.effects.rack_span, RackSpanModel::kRigid);
+  on.rack_body_depth = 0.2;
+  const Drive ls = fe_reference_drive(lm, on);
+  EXPECT_EQ(ls.effects.rack_span, RackSpanModel::kCoupled);
+  EXPECT_NEAR(ls.rack.section.second_moment, lm.pinion.face_width * 0.008 / 12, 1e-15);
+  EXPECT_NEAR(ls.rack.section.neutral_axis_depth, 0.1, 1e-15);
+}
+
+TEST(RackSpanFe, EquationsGoToTheDeckAndBadOnesAreRefused) {
+  PlaneStressModel m;
+  m.mesh = mesh_polygon(hinged_beam_outline(kSpan, kDepth, 0.003, 0.2, 0.21), kDepth / 2);
+  m.youngs_modulus = kE;
+  m.poisson_ratio = kNu;
+  const HingeConstraints h = hinge_constraints(m.mesh, "HINGE_L", "HINGE_L_AXIS", true);
+  m.supports = h.supports;
+  m.equations = h.equations;
+  ASSERT_FALSE(m.equations.empty());
+  const std::string deck = ccx_deck(m, 1e-4);
+  EXPECT_NE(deck.find("*EQUATION\n3\n"), std::string::npos);
+  EXPECT_LT(deck.find("*EQUATION"), deck.find("*STEP"));
+  m.equations.push_back(NodeEquation{{{0, 1, 1.0}}});
+  EXPECT_THROW(ccx_deck(m, 1e-4), std::invalid_argument);  // one term
+  m.equations.back() = NodeEquation{{{0, 1, 0.0}, {1, 1, 1.0}}};
+  EXPECT_THROW(ccx_deck(m, 1e-4), std::invalid_argument);  // dependent coefficient 0
+  m.equations.back() = NodeEquation{{{0, 3, 1.0}, {1, 1, 1.0}}};
+  EXPECT_THROW(ccx_deck(m, 1e-4), std::invalid_argument);  // dof 3
 }
 
 TEST(RackSpanFe, BadHingesAreRefused) {
