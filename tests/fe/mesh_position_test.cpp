@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
@@ -43,6 +45,9 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   for (const FePosition* p : {&a, &b}) {
     EXPECT_GT(p->stiffness, 0);
     EXPECT_GT(p->force, 0);
+    // The last step reaches the drive's load (one run or a corrected second one).
+    EXPECT_NEAR(p->load_fraction, 1.0, 0.1);
+    EXPECT_NEAR(p->force, p->load_fraction * d.load.force, 1e-9 * d.load.force);
     ASSERT_EQ(p->pairs.size(), analytic.pairs.size());
     // Each pair's share from its own contact force; their sum is not forced.
     EXPECT_NEAR(share_sum(*p), 1.0, 1e-3);
@@ -70,6 +75,53 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
               c.stiffness / a.stiffness - 1, a.elements, a.seconds);
   EXPECT_GT(ratio, 0.3);
   EXPECT_LT(ratio, 3.0);
+}
+
+TEST(MeshPositionFe, LoadWindowAndTheCorrectedSecondRun) {
+  // Aimed with the analytic stiffness itself (ratio 1), the first run stops
+  // near K_FE / K_an ~ 0.65 of the load: a miss, so the rotations are
+  // corrected along the run's secant and the second run reaches the load.
+  const Drive d = small_drive();
+  const double X = 0.31 * M_PI * d.pinion.module;
+  MeshPositionTuning t;
+  t.predicted_stiffness_ratio = 1.0;
+  t.step_fractions = {0.2, 0.6, 1.0};
+  const FePosition p = fe_mesh_position(d, X, FeOptions{}, t);
+  EXPECT_EQ(p.ccx_runs, 2);
+  EXPECT_NEAR(p.load_fraction, 1.0, 0.1);
+  ASSERT_EQ(p.step_forces.size(), 3u);
+  ASSERT_EQ(p.step_rotations.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.step_forces.back(), p.force);
+  for (std::size_t k = 1; k < 3; ++k) {
+    EXPECT_GT(p.step_forces[k], p.step_forces[k - 1]);
+    EXPECT_NEAR(p.step_rotations[k] / p.step_rotations.back(), t.step_fractions[k], 1e-12);
+  }
+  // K is the secant from the first to the last step; the lower window
+  // (0.2-0.6 of the load) gives nearly the same: the contact stiffens a
+  // little with load (Hertz), the rest of the mesh is linear.
+  const auto secant = [&](std::size_t a, std::size_t b) {
+    return (p.step_forces[b] - p.step_forces[a]) / (p.step_rotations[b] - p.step_rotations[a]);
+  };
+  EXPECT_NEAR(secant(0, 2) / secant(0, 1), 1.0, 0.02);
+  EXPECT_GE(secant(1, 2), secant(0, 1) * (1 - 1e-4));  // not softening with load
+}
+
+TEST(MeshPositionFe, BadTuningIsRefusedBeforeAnyFeWork) {
+  FeOptions o;
+  o.ccx.program = "/nonexistent/ccx";
+  const Drive d = small_drive();
+  for (const std::vector<double>& f : {std::vector<double>{1.0}, std::vector<double>{0.5, 0.2, 1.0},
+                                       std::vector<double>{0.0, 1.0}, std::vector<double>{0.2, 0.8}}) {
+    MeshPositionTuning t;
+    t.step_fractions = f;
+    EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
+  }
+  MeshPositionTuning t;
+  t.predicted_stiffness_ratio = 0;
+  EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
+  t = MeshPositionTuning{};
+  t.load_tolerance = -0.1;
+  EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
 }
 
 TEST(MeshPositionFe, MissingCcxIsCcxNotFound) {
