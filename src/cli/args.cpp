@@ -3,6 +3,7 @@
 
 #include "cli.hpp"
 #include "rackopt/core/drive.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
 
 namespace rackopt::cli {
 namespace {
@@ -48,6 +49,12 @@ Args parse_args(int argc, char** argv) {
       a.seed = parse_whole(s, need_value(s), 0, 2147483647L);
     } else if (s == "--threads") {
       a.threads = static_cast<int>(parse_whole(s, need_value(s), 1, 1024));
+    } else if (s == "--positions") {
+      a.positions = static_cast<int>(parse_whole(s, need_value(s), 1, fe::kMaxFePositions));
+    } else if (s == "--level") {
+      a.level = static_cast<int>(parse_whole(s, need_value(s), 0, 6));  // FeOptions::level
+    } else if (s == "--extended-contact") {
+      a.extended_contact = true;
     } else if (s == "--json") {
       a.json = true;
     } else if (s == "--resume") {

@@ -23,9 +23,12 @@ struct Args {
   bool json = false;
   long samples = -1;       // --samples N (wear): overrides reliability.samples
   long seed = -1;          // --seed S (wear): overrides reliability.seed
-  int threads = 0;         // --threads N (wear, run): 0 = all cores
+  int threads = 0;         // --threads N (wear, run, fe): 0 = all cores
   bool resume = false;     // --resume (run): continue a study from its evaluation store
   bool progress = false;   // --progress (run): progress bar even when stderr is not a terminal
+  int positions = -1;      // --positions N (fe): 1..64; -1 = 4
+  int level = -1;          // --level L (fe): 0..6; -1 = 0
+  bool extended_contact = false;  // --extended-contact (fe)
   std::vector<std::string> given;  // every --option given, in order, without "=value"
 };
 
@@ -56,5 +59,6 @@ int cmd_check(const Args& a);
 int cmd_stiffness(const Args& a);
 int cmd_wear(const Args& a);
 int cmd_run(const Args& a);
+int cmd_fe(const Args& a);
 
 }  // namespace rackopt::cli

@@ -16,6 +16,8 @@
 #include "cli.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
+#include "rackopt/fe/ccx_runner.hpp"
+#include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
@@ -77,6 +79,12 @@ std::string text_for_people(const study::StudySpec& spec, const study::StudyResu
     design_lines(o, spec, *r.best);
   }
   if (r.reliability && r.best_drive) o << rackopt::wear_summary(*r.best_drive, *r.reliability);
+  if (r.fe_verification) {
+    o << "  FE verification of the " << (spec.kind == study::StudyKind::kPareto ? "chosen" : "best") << " design:\n"
+      << fe::fe_comparison_summary(*r.fe_verification);
+  } else if (spec.verify_fe) {
+    o << "  FE verification: " << r.fe_verification_error << "\n";
+  }
   if (spec.kind == study::StudyKind::kSweep && !r.sweep_points.empty()) {
     // The response range of every metric over the points that computed it:
     // the first thing one wants to know of a sweep.
@@ -125,6 +133,7 @@ int cmd_run(const Args& a) {
   const std::string out_dir =
       a.out_dir.empty() ? (fs::path("out") / folder_name(spec.name)).string() : a.out_dir;
 
+  if (spec.verify_fe) (void)fe::find_ccx();  // `verify: fe` without ccx: refused before the study runs
   const FolderLock lock(out_dir);  // held until the report is written
   report_stale_temporaries(lock);
 
@@ -163,6 +172,7 @@ int cmd_run(const Args& a) {
   // written): either way the run was interrupted.
   if (result.status == "stopped" || stop_requested()) return kInterruptedExit;
   if (result.status == "all_failed") return kRunFailed;
+  if (spec.verify_fe && !result.fe_verification && result.best_drive) return kRunFailed;  // asked for, failed
   return kOk;
 }
 

@@ -6,6 +6,8 @@
 //                [--seed S] [--threads N]
 //   rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]
 //               [--json] [--progress]
+//   rackopt fe FILE [--set key=value]... [--positions N] [--level L]
+//              [--extended-contact] [--out DIR] [--json] [--threads N]
 //
 // Exit codes (docs/output.md, "Exit codes"): 0 ok, 1 run failed (also a
 // result file that cannot be written), 2 bad input, a usage error or an
@@ -20,6 +22,7 @@
 #include "cli.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/record/evaluation_store.hpp"
@@ -39,6 +42,12 @@ const char* kUsage =
     "               [--samples N] [--seed S] [--threads N]\n"
     "      Archard wear along both flanks, wear life, and life at reliability R by\n"
     "      Monte Carlo (problem keys wear, duty, reliability; docs/yaml.md)\n"
+    "  rackopt fe FILE [--set key=value]... [--positions N] [--level L]\n"
+    "             [--extended-contact] [--out DIR] [--json] [--threads N]\n"
+    "      the analytic mesh model against finite elements (Gmsh + CalculiX ccx,\n"
+    "      Debian calculix-ccx) at N positions over one mesh period (default 4;\n"
+    "      1..64), FE level L (0 = coarsest, module/6; 0..6): DIR/fe.csv,\n"
+    "      DIR/fe.json, DIR/fe_stiffness.png (default DIR: out/<problem>_fe); docs/fe.md\n"
     "  rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]\n"
     "              [--json] [--progress]\n"
     "      run a study file (studies/*.yaml: evaluate, sweep, optimize, pareto,\n"
@@ -100,7 +109,8 @@ int main(int argc, char** argv) {
     return kOk;
   }
   if (args.command.empty()) return usage_error("no command given");
-  if (args.command != "check" && args.command != "stiffness" && args.command != "wear" && args.command != "run") {
+  if (args.command != "check" && args.command != "stiffness" && args.command != "wear" && args.command != "run" &&
+      args.command != "fe") {
     return usage_error("unknown command '" + args.command + "'");
   }
   if (args.file.empty()) {
@@ -132,6 +142,8 @@ int main(int argc, char** argv) {
       code = cmd_stiffness(args);
     } else if (args.command == "run") {
       code = cmd_run(args);
+    } else if (args.command == "fe") {
+      code = cmd_fe(args);
     } else {
       code = cmd_wear(args);
     }
@@ -154,6 +166,12 @@ int main(int argc, char** argv) {
     return fail(kBadInput, "output_folder", e.what());
   } catch (const rackopt::OutputFolderInUse& e) {
     return fail(kBadInput, "output_folder", e.what());
+  } catch (const rackopt::fe::CcxNotFound& e) {
+    return fail(kRunFailed, "ccx_not_found", e.what());
+  } catch (const rackopt::fe::CcxError& e) {
+    std::string msg = std::string("FE solve failed: ") + e.what();
+    if (!e.deck().empty() && msg.find(e.deck()) == std::string::npos) msg += " (input deck kept: " + e.deck() + ")";
+    return fail(kRunFailed, "fe_solver", msg);
   } catch (const std::exception& e) {
     return fail(kRunFailed, "run", std::string("run failed: ") + e.what());
   }

@@ -1,6 +1,7 @@
 #include "rackopt/report/study_report.hpp"
 
 #include "rackopt/report/optimum_report.hpp"
+#include "rackopt/report/fe_verification_report.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -682,6 +683,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
       << wear_summary(*result.best_drive, *result.reliability) << "```\n\n";
   }
 
+  o << fe_verification_markdown(spec, result);
   o << fidelity_markdown(result);
   o << "## Counts and timings\n\n";
   const std::size_t fresh = result.evaluations >= result.reused_evaluations
@@ -877,6 +879,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   optimum_json(j, spec, result, [](JsonWriter& w, const StudySpec& sp, const DesignResult& d) {
     json_design(w, sp, d, std::nullopt);
   });
+  fe_verification_json(j, spec, result);
   j.key("evaluations").value(static_cast<long>(result.evaluations));
   j.key("failed_evaluations").value(static_cast<long>(result.failed_evaluations));
   j.key("reused_evaluations").value(static_cast<long>(result.reused_evaluations));
@@ -1019,6 +1022,8 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
       plot("reliability_png", "reliability.gp", reliability_gnuplot(title), "reliability.png");
     }
   }
+
+  write_fe_verification_files(spec, result, rep.files, write, plot);
 
   const std::size_t n_obj = spec.objectives.size();
   if (!front_table.text.empty() && (n_obj == 2 || n_obj == 3)) {

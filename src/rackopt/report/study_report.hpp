@@ -25,7 +25,8 @@ namespace rackopt::study {
 // "stiffness_csv", "pareto_png", "history_png", "stiffness_png",
 // "sweep_png", the wear roles of `rackopt wear` ("wear_profile_csv",
 // "life_samples_csv", "reliability_csv", "life_histogram_csv",
-// "wear_profile_png", "life_histogram_png", "reliability_png"), and the
+// "wear_profile_png", "life_histogram_png", "reliability_png"), `verify: fe`'s
+// "fe_csv" and "fe_png" (report/fe_verification_report.hpp), and the
 // runner's "evaluations_csv" and "database". gnuplot scripts (*.gp) are
 // written next to each plot but not listed here.
 struct ReportFiles {

@@ -19,6 +19,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/fe_verification.hpp"
 #include "rackopt/study/fidelity_settings.hpp"
 #include "rackopt/study/study_problem.hpp"
 
@@ -823,6 +824,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   store.set_meta("status", run.stopped() ? "stopped" : "finished");
   store.set_meta("result_status", status);
   record::write_evaluations_csv(store, base.variable_keys(), base.metric_labels(), csv_path);
+  verify_best_design_by_fe(spec, options, result);
   result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return result;
 }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rackopt/core/drive.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/study_spec.hpp"
@@ -85,6 +86,10 @@ struct StudyResult {
   std::vector<std::pair<std::string, std::string>> fidelity;
   // sweep: Sobol ranking of the variables for every metric, from the points.
   std::vector<MetricSensitivity> sensitivity;
+  // `verify: fe` (study/fe_verification.hpp): the FE comparison of best_drive,
+  // or why there is none (no design to verify, the solver missing or failed).
+  std::shared_ptr<const fe::FeComparison> fe_verification;
+  std::string fe_verification_error;
 };
 
 // Progress as the runner reports it (for the progress bar).
@@ -102,6 +107,7 @@ struct RunOptions {
   std::function<void(const Progress&)> progress;  // after every evaluation (may be empty)
   std::function<bool()> stop;           // polled between evaluations and by the Monte Carlo of a reliability
                                         // study (from its worker threads: must be thread-safe); true = stop cleanly (Ctrl-C)
+  fe::FeCalls fe_calls;                 // `verify: fe`: the FE solves (empty members = the real ones; tests inject fakes)
 };
 
 // Runs the study; at the end writes <out>/evaluations.csv from the store

@@ -29,6 +29,7 @@
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/solvers/pareto.hpp"
 #include "rackopt/solvers/solver.hpp"
+#include "rackopt/study/fe_verify_spec.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt::study {
@@ -136,6 +137,9 @@ struct StudySpec {
   // optimize the continuous rest for each (optimize, pareto); refuse above
   // this many combinations with a message naming them.
   std::size_t max_discrete_combinations = 256;
+  // `verify: fe`: the best design compared with the FE reference after the
+  // study (not part of the fingerprint: it changes no evaluation).
+  std::optional<FeVerifySpec> verify_fe;
 
   // Every metric the study reads, objectives first, then constraints, then
   // report_metrics, without repeats (by label).

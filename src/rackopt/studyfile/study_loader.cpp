@@ -24,6 +24,7 @@
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
 #include "rackopt/solvers/problem.hpp"
+#include "rackopt/studyfile/verify_section.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt::study {
@@ -587,7 +588,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   spec.file = name_for_messages;
   const Section top(&root, "", root.mark,
                     {"study", "problem", "problem_set", "variables", "objectives", "constraints", "report",
-                     "metric_options", "solver", "pareto", "sweep", "output", "limits"});
+                     "metric_options", "solver", "pareto", "sweep", "output", "limits", "verify"});
 
   // --- study -----------------------------------------------------------------
   const std::vector<std::string> kinds = {"evaluate", "sweep", "optimize", "pareto", "reliability"};
@@ -923,6 +924,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   const Section lim(top.get("limits"), "limits", top.key_mark("limits"), {"max_discrete_combinations"},
                     "{max_discrete_combinations: 256}");
   spec.max_discrete_combinations = static_cast<std::size_t>(lim.integer("max_discrete_combinations", 256, 1, 100000000));
+  spec.verify_fe = read_verify_section(top);
 
   // --- what each kind needs ------------------------------------------------------------
   const std::string kind_text_s(kind_name(spec.kind));

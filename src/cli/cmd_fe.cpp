@@ -1,0 +1,78 @@
+// rackopt fe: the analytic mesh model against the FE reference at N travel
+// positions over one mesh period (rackopt/fe/fe_comparison.hpp, docs/fe.md).
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/progress_bar.hpp"
+#include "rackopt/fe/ccx_runner.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
+#include "rackopt/fe/fe_comparison_report.hpp"
+#include "rackopt/output/atomic_file.hpp"
+#include "rackopt/output/folder_lock.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace rackopt::cli {
+
+int cmd_fe(const Args& a) {
+  const Drive drive = load_problem(a.file, a.overrides);
+  fe::FeComparisonOptions opt;
+  opt.positions = a.positions > 0 ? a.positions : 4;
+  opt.fe.level = a.level >= 0 ? a.level : 0;
+  opt.fe.extended_contact = a.extended_contact;
+  opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
+  opt.stop = [] { return stop_requested(); };
+
+  // Checked before the output folder is made, so that an impossible design
+  // or a missing solver leaves nothing behind.
+  std::vector<std::string> warnings = MeshStiffnessModel(fe::fe_reference_drive(drive)).warnings();
+  (void)fe::find_ccx(opt.fe.ccx);
+
+  namespace fs = std::filesystem;
+  const fs::path dir = a.out_dir.empty() ? fs::path("out") / (fs::path(a.file).stem().string() + "_fe")
+                                         : fs::path(a.out_dir);
+  const FolderLock lock(dir.string());  // before the long part: a folder in use is refused at once
+  report_stale_temporaries(lock);
+  std::cerr << "rackopt: FE at " << opt.positions << " position" << (opt.positions == 1 ? "" : "s") << ", level "
+            << opt.fe.level << " (mesh-position and single-tooth solves with ccx)...\n";
+  ProgressBar bar(0, "FE solves");
+  opt.progress = [&](std::size_t done, std::size_t total) {
+    bar.update(static_cast<long>(done), static_cast<long>(total), "");
+  };
+  // Nothing is written before every solve has ended: a failure or Ctrl-C
+  // leaves no partial result.
+  const fe::FeComparison c = fe::compare_with_fe(drive, opt);
+  bar.finish(true);  // finish the progress line before printing
+  throw_if_stop_requested("fe");
+
+  const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;
+  fe::FeFiles files;
+  files.csv = (dir / "fe.csv").string();
+  write_file_atomic(files.csv, fe::fe_comparison_csv(c));
+  write_file_atomic((dir / "fe_stiffness.gp").string(), fe::fe_comparison_gnuplot(c, title, "fe_stiffness.png.tmp"));
+  files.plot = render_plot(dir.string(), "fe_stiffness.gp", "fe_stiffness.png", warnings);
+  files.json = (dir / "fe.json").string();
+  const std::string json = fe::fe_comparison_json(drive, c, files, warnings);
+  write_file_atomic(files.json, json + "\n");
+  throw_if_stop_requested("fe");  // the tables are complete; the plot may not have been drawn
+
+  std::string text = title + "\n" + fe::fe_comparison_summary(c);
+  text += "  wrote " + files.csv + ", " + files.json + "\n";
+  text += files.plot.empty() ? "  no plot (see warnings)\n" : "  plot  " + files.plot + "\n";
+  for (const std::string& w : warnings) text += "  warning: " + w + "\n";
+  set_immediate_stop_output("");  // our own output follows
+  if (a.json) {
+    std::cerr << text;
+    std::cout << json << "\n";
+  } else {
+    std::cout << text;
+  }
+  return kOk;
+}
+
+}  // namespace rackopt::cli

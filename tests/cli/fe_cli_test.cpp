@@ -1,0 +1,196 @@
+// `rackopt fe`: usage errors, a missing solver, an impossible design (each
+// before any file is made), and one real run at the coarsest level.
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct CliResult {
+  int code = -1;
+  std::string out;  // stdout, then stderr when `with_stderr`
+};
+
+CliResult run(const std::string& args, bool with_stderr = false, const std::string& env = "") {
+  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && " + env + " '" + RACKOPT_CLI + "' " + args +
+                          (with_stderr ? " 2>&1" : " 2>/dev/null");
+  CliResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::filesystem::path tmp_root() {
+  return std::filesystem::temp_directory_path() / ("rackopt_fe_cli_test_" + std::to_string(::getpid()));
+}
+
+std::string tmp_dir(const std::string& name) {
+  const auto dir = tmp_root() / name;
+  std::filesystem::remove_all(dir);
+  return dir.string();
+}
+
+class RemoveTmpRoot : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(tmp_root(), ec);
+  }
+};
+[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
+
+TEST(FeCli, BadPositionsLevelAndUnknownOptionsAreUsageErrors) {
+  const std::string dir = tmp_dir("usage");
+  struct Case {
+    const char* args;
+    const char* says;
+  };
+  for (const Case& c : {Case{"--positions 0", "--positions needs a whole number in 1..64, got '0'"},
+                        Case{"--positions 65", "in 1..64, got '65'"}, Case{"--positions two", "got 'two'"},
+                        Case{"--level 7", "--level needs a whole number in 0..6, got '7'"},
+                        Case{"--level -1", "got '-1'"}, Case{"--samples 10", "option --samples does not apply to 'fe'"},
+                        Case{"--frobnicate", "unknown option --frobnicate"}}) {
+    const CliResult r = run(std::string("fe problems/gantry_axis.yaml --out ") + dir + " " + c.args, true);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.out;
+    EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << "\n" << r.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // --positions belongs to fe only.
+  const CliResult s = run("stiffness problems/gantry_axis.yaml --positions 3", true);
+  EXPECT_EQ(s.code, 2);
+  EXPECT_NE(s.out.find("does not apply to 'stiffness'"), std::string::npos) << s.out;
+  // With --json a usage error is one JSON object too.
+  const CliResult j = run("fe problems/gantry_axis.yaml --level 9 --json");
+  EXPECT_EQ(j.code, 2);
+  const auto o = nlohmann::json::parse(j.out);
+  EXPECT_EQ(o["error"], "usage");
+}
+
+TEST(FeCli, AMissingCcxIsExitOneNamingThePackageAndLeavesNoFiles) {
+  const std::string dir = tmp_dir("no_ccx");
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --out " + dir, true, "RACKOPT_CCX=/nonexistent");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("calculix-ccx"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  const CliResult j = run("fe problems/gantry_axis.yaml --json --out " + dir, false, "RACKOPT_CCX=/nonexistent");
+  EXPECT_EQ(j.code, 1);
+  const auto o = nlohmann::json::parse(j.out);
+  EXPECT_EQ(o["ok"], false);
+  EXPECT_EQ(o["error"], "ccx_not_found");
+  EXPECT_NE(o["message"].get<std::string>().find("calculix-ccx"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(FeCli, AnImpossibleDesignIsReportedAsTheOtherCommandsDoBeforeAnyFeWork) {
+  const std::string dir = tmp_dir("design");
+  // Even with no solver: the design is refused first.
+  const CliResult r = run("fe problems/gantry_axis.yaml --set pinion.addendum=3 --json --out " + dir, false,
+                          "RACKOPT_CCX=/nonexistent");
+  EXPECT_EQ(r.code, 2) << r.out;
+  const auto o = nlohmann::json::parse(r.out);
+  EXPECT_EQ(o["error"], "design:pointed_tooth");
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
+  const std::string dir = tmp_dir("study_no_ccx");
+  std::filesystem::create_directories(tmp_root());
+  const std::string study = (tmp_root() / "verify_study.yaml").string();
+  std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
+                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
+                       << "report: [contact_ratio]\n"
+                       << "verify: {method: fe, positions: 2}\n";
+  const CliResult r = run("run " + study + " --out " + dir, true, "RACKOPT_CCX=/nonexistent");
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("calculix-ccx"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // A bad verify key is bad input at its line and column.
+  std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
+                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
+                       << "verify: {method: fe, level: 9}\n";
+  const CliResult b = run("run " + study + " --out " + dir, true);
+  EXPECT_EQ(b.code, 2) << b.out;
+  EXPECT_NE(b.out.find("verify_study.yaml:3:29"), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find("verify.level"), std::string::npos) << b.out;
+}
+
+// The real solves, at the coarsest level on the smallest shipped drive, two
+// positions: the files are there and whole, K of both codes is positive, the
+// errors are what the numbers in the files say, and nothing is left behind.
+TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
+  const std::string dir = tmp_dir("real");
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --level 0 --threads 2 --json --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  std::ifstream in(dir + "/fe.json");
+  std::stringstream file;
+  file << in.rdbuf();
+  EXPECT_EQ(nlohmann::json::parse(file.str()), j);
+  ASSERT_EQ(j["positions"].size(), 2u);
+  for (const auto& p : j["positions"]) {
+    const double fe = p["k_fe"].get<double>(), an = p["k_analytic"].get<double>();
+    EXPECT_GT(fe, 0);
+    EXPECT_GT(an, 0);
+    EXPECT_NEAR(p["k_error"].get<double>(), (an - fe) / fe, 1e-12 * std::abs((an - fe) / fe) + 1e-15);
+    ASSERT_FALSE(p["pairs"].empty());
+    double shares = 0;
+    for (const auto& q : p["pairs"]) {
+      EXPECT_GT(q["pinion_fe"].get<double>(), 0);
+      EXPECT_GT(q["rack_fe"].get<double>(), 0);
+      shares += q["share_fe"].get<double>();
+    }
+    EXPECT_NEAR(shares, 1.0, 0.02);  // no extended contact asked for
+  }
+  EXPECT_GT(j["summary"]["time_ratio"].get<double>(), 1.0);
+  std::ifstream csv(dir + "/fe.csv");
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("travel_m,k_fe_N_per_m,k_analytic_N_per_m,k_error,", 0), 0u);
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 2);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/fe_stiffness.gp"));
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+  }
+}
+
+// A solve that fails: exit 1 with the solver's own message and the kept
+// deck, no result file.
+TEST(FeCli, AFailingSolverIsExitOneWithItsMessageAndTheKeptDeck) {
+  const std::string dir = tmp_dir("ccx_fails");
+  std::filesystem::create_directories(tmp_root());
+  const std::string fake = (tmp_root() / "fake_ccx").string();
+  std::ofstream(fake) << "#!/bin/sh\necho ' *ERROR in fake_ccx: the matrix is singular'\nexit 201\n";
+  std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
+  const std::string work = (tmp_root() / "ccx_work").string();
+  std::filesystem::create_directories(work);
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 1 --threads 1 --json --out " + dir, false,
+                          "RACKOPT_CCX=" + fake + " TMPDIR=" + work);
+  EXPECT_EQ(r.code, 1) << r.out;
+  const auto o = nlohmann::json::parse(r.out);
+  EXPECT_EQ(o["error"], "fe_solver");
+  const std::string msg = o["message"].get<std::string>();
+  EXPECT_NE(msg.find("the matrix is singular"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("job.inp"), std::string::npos) << msg;
+  for (const char* f : {"fe.csv", "fe.json", "fe_stiffness.png", "fe_stiffness.gp"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + f)) << f;
+  }
+}
+
+}  // namespace
