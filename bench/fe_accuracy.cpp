@@ -5,23 +5,26 @@
 //
 //   ./build/fe_accuracy [--table levels|compare|window|all] [--problems a,b,...]
 //                       [--positions N] [--levels 0,1,2] [--threads T]
+//                       [--max-pair-level L] [--time-limit S]
 //
 //   levels   per problem: K at the middle of the single- and of the double-pair
 //            zone, and the pinion and rack single-tooth compliances at the
 //            pitch point, at each level; order, Richardson value, each level's
 //            error against it; elements and wall time.
 //            (default problems: gantry_axis, rack_railway)
-//   compare  per problem: N positions over one mesh period at level 0 (the
-//            first of --levels): FE K and load shares against the analytic
-//            model with a rigid rack body (the body the FE rack segment sits
-//            on is held at its base: MeshStiffnessModel's rack_span = rigid),
-//            the single-tooth compliances at three contacts, the force the
-//            last load step reached, and the analytic model's time per position.
-//            (default problems: every problems/*.yaml)
+//   compare  per problem: compare_with_fe (fe_comparison.hpp) at N positions
+//            over one mesh period at the first of --levels: the analytic
+//            model's K, load shares and single-tooth compliances against FE
+//            (rigid rack body in the analytic model, the FE rack segment held
+//            at its base), the force the last load step reached, the time per
+//            position of both. (default problems: every problems/*.yaml)
 //   window   per problem: the secant K over load windows 0.2-0.6, 0.2-1.0 and
 //            0.5-1.0 of the last step, one ccx run with four steps.
 //            (default problems: gantry_axis, rack_railway)
 //
+// --max-pair-level: the levels table solves pair positions only up to level
+// L (a level-2 pair position is ~40 000 elements and 20-40 ccx iterations);
+// --time-limit: seconds per ccx solve (default 3600).
 // Problems are names in problems/ (without .yaml) or paths. --threads runs
 // that many FE solves at once (each ccx single-threaded; Gmsh meshing is
 // serialized inside the library). Times are wall times of each solve.
@@ -40,6 +43,7 @@
 #include <vector>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
 #include "rackopt/fe/richardson.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
@@ -57,6 +61,8 @@ struct Args {
   int positions = 6;
   std::vector<int> levels = {0, 1, 2};
   int threads = 1;
+  int max_pair_level = 2;           // levels table: pair positions only up to this level
+  double time_limit_seconds = 3600; // per ccx solve
 };
 
 std::vector<std::string> split(const std::string& s) {
@@ -132,29 +138,16 @@ double zone_middle(const MeshStiffnessModel& model, double pitch, std::size_t pa
   return best_mid;
 }
 
-// Median wall time [s] of the analytic model at one position (model built once, as a curve does).
-double analytic_seconds_per_position(const MeshStiffnessModel& model, double pitch) {
-  std::vector<double> t;
-  for (int rep = 0; rep < 21; ++rep) {
-    const auto t0 = std::chrono::steady_clock::now();
-    double sink = 0;
-    for (int k = 0; k < 100; ++k) sink += model.at(pitch * (1 + k / 100.0)).stiffness;
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / 100);
-    if (!(sink > 0)) throw std::runtime_error("analytic stiffness not positive");
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 // ---- levels ------------------------------------------------------------------------
 
 struct LevelValue {
   double value = NAN;
   int elements = 0;
   double seconds = 0;
+  std::string failed;  // why there is no value (a failed or skipped solve)
 };
 
-void levels_table(const std::vector<std::string>& problems, const std::vector<int>& levels, int threads) {
+void levels_table(const std::vector<std::string>& problems, const std::vector<int>& levels, const Args& args) {
   struct Quantity {
     std::string problem, name;
     std::vector<LevelValue> at;  // per level
@@ -179,30 +172,41 @@ void levels_table(const std::vector<std::string>& problems, const std::vector<in
     std::snprintf(label, sizeof label, "rack tooth compliance, s = s_P");
     q.push_back({stem(name), label, {}});
     for (std::size_t k = first; k < q.size(); ++k) q[k].at.resize(levels.size());
-    for (std::size_t li = 0; li < levels.size(); ++li) {
+    // Finest level first: the longest solves start first and the threads stay busy.
+    for (std::size_t li = levels.size(); li-- > 0;) {
       FeOptions o;
       o.level = levels[li];
+      o.ccx.time_limit_seconds = args.time_limit_seconds;
       for (int which = 0; which < 4; ++which) {
         if (q[first + which].name.empty()) continue;
+        if (which < 2 && o.level > args.max_pair_level) {
+          q[first + static_cast<std::size_t>(which)].at[li].failed = "not run (--max-pair-level)";
+          continue;
+        }
         jobs.push_back([&q, &mu, d, o, which, first, li, X1, X2, s_p] {
           LevelValue v;
+          try {
           if (which < 2) {
             const FePosition p = fe_mesh_position(d, which == 0 ? X1 : X2, o);
-            v = {p.stiffness, p.elements, p.seconds};
+            v = {p.stiffness, p.elements, p.seconds, {}};
           } else {
             const ToothComplianceFe c =
                 fe_tooth_compliance(d, which == 2 ? ToothMember::kPinion : ToothMember::kRack, s_p, o);
-            v = {c.compliance, c.elements, c.seconds};
+            v = {c.compliance, c.elements, c.seconds, {}};
+          }
+          } catch (const std::exception& e) {
+            v.failed = e.what();
+            v.failed = v.failed.substr(0, v.failed.find('\n'));
           }
           std::lock_guard<std::mutex> lock(mu);
           q[first + static_cast<std::size_t>(which)].at[li] = v;
-          std::fprintf(stderr, "  level %d, quantity %d: %.6g (%d elements, %.1f s)\n", o.level, which, v.value,
-                       v.elements, v.seconds);
+          std::fprintf(stderr, "  level %d, quantity %d: %.6g (%d elements, %.1f s) %s\n", o.level, which, v.value,
+                       v.elements, v.seconds, v.failed.c_str());
         });
       }
     }
   }
-  run_jobs(jobs, threads);
+  run_jobs(jobs, args.threads);
 
   std::printf("| problem | quantity | level | elements | value | wall s | error vs Richardson |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
@@ -212,15 +216,24 @@ void levels_table(const std::vector<std::string>& problems, const std::vector<in
     for (const LevelValue& l : x.at) v.push_back(l.value);
     // 7 printed digits in ccx's .dat: differences below ~1e-6 are not resolved.
     RichardsonEstimate e;
-    bool have = v.size() >= 3;
+    bool have = v.size() >= 3 && std::all_of(v.begin(), v.end(), [](double y) { return std::isfinite(y); });
     if (have) e = richardson(v, 2.0, 1e-6);
     const bool stiffness = x.name[0] == 'K';
     for (std::size_t li = 0; li < x.at.size(); ++li) {
+      if (!x.at[li].failed.empty()) {
+        std::printf("| %s | %s | %d | | – | | %s |\n", x.problem.c_str(), x.name.c_str(), levels[li],
+                    x.at[li].failed.c_str());
+        continue;
+      }
       char err[32] = "–";
       if (have && !std::isnan(e.relative_error[li])) std::snprintf(err, sizeof err, "%.2e", e.relative_error[li]);
       std::printf("| %s | %s | %d | %d | %.6g %s | %.1f | %s |\n", x.problem.c_str(), x.name.c_str(), levels[li],
                   x.at[li].elements, stiffness ? x.at[li].value : x.at[li].value * 1e9,
                   stiffness ? "N/m" : "e-9 m/N", x.at[li].seconds, err);
+    }
+    if (!have && x.at.size() >= 2 && std::isfinite(x.at[0].value) && std::isfinite(x.at[1].value)) {
+      std::printf("| %s | %s | 0 → 1 | | %+.2e | | (no third level) |\n", x.problem.c_str(), x.name.c_str(),
+                  x.at[1].value / x.at[0].value - 1);
     }
     if (have) {
       std::printf("| %s | %s | Richardson | | %.6g %s | | order %.2f, %s |\n", x.problem.c_str(), x.name.c_str(),
@@ -232,132 +245,84 @@ void levels_table(const std::vector<std::string>& problems, const std::vector<in
 
 // ---- compare -----------------------------------------------------------------------
 
-void compare_table(const std::vector<std::string>& problems, int positions, int level, int threads) {
+// The analytic model against FE (fe_comparison.hpp: rigid rack body in the
+// analytic model, FE rack segment held at its base; errors (analytic - FE) / FE,
+// share errors analytic - FE).
+void compare_table(const std::vector<std::string>& problems, int positions, int level, int threads,
+                   double time_limit) {
   struct Row {
     std::string problem;
-    std::vector<FePosition> fe;
-    std::vector<MeshState> an;
-    std::vector<ToothComplianceFe> pinion, rack;
-    double analytic_s = 0;
-    double pitch = 0;
+    double load = 0;
+    FeComparison c;
   };
-  std::vector<Row> rows(problems.size());
-  std::vector<std::function<void()>> jobs;
-  FeOptions o;
-  o.level = level;
-  for (std::size_t i = 0; i < problems.size(); ++i) {
-    Row& row = rows[i];
-    const Drive d = load_problem(problem_path(problems[i]));
-    const MeshStiffnessModel model(rigid_rack(d));
-    row.problem = stem(problems[i]);
-    row.pitch = M_PI * d.pinion.module;
-    row.analytic_s = analytic_seconds_per_position(model, row.pitch);
-    row.fe.resize(static_cast<std::size_t>(positions));
-    for (int k = 0; k < positions; ++k) {
-      // Offset by a quarter step so no position sits on a pair's entry or exit.
-      const double X = row.pitch * (1 + (k + 0.25) / positions);
-      row.an.push_back(model.at(X));
-      jobs.push_back([&row, d, o, X, k] { row.fe[static_cast<std::size_t>(k)] = fe_mesh_position(d, X, o); });
-    }
-    const ContactPath& path = model.geometry().path;
-    const double span = path.s_end - path.s_start;
-    const std::vector<double> s_list = {path.s_start + 0.02 * span, path.s_pitch, path.s_end - 0.02 * span};
-    row.pinion.resize(s_list.size());
-    row.rack.resize(s_list.size());
-    for (std::size_t k = 0; k < s_list.size(); ++k) {
-      const double s = std::max(s_list[k], 1e-3 * span);
-      jobs.push_back([&row, d, o, s, k] { row.pinion[k] = fe_tooth_compliance(d, ToothMember::kPinion, s, o); });
-      jobs.push_back([&row, d, o, s, k] { row.rack[k] = fe_tooth_compliance(d, ToothMember::kRack, s, o); });
-    }
-  }
-  run_jobs(jobs, threads);
-
-  std::printf("Per position (level %d; K error = (K_an - K_FE) / K_FE; shares: FE / analytic, nearest the pinion "
-              "tip first):\n\n",
-              level);
-  std::printf("| problem | X / p | pairs | K_FE [N/m] | K_an [N/m] | K error | shares FE | shares analytic | "
-              "F2 / load.force | ccx runs | elements | wall s |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const Row& r : rows) {
-    for (std::size_t k = 0; k < r.fe.size(); ++k) {
-      const FePosition& f = r.fe[k];
-      const MeshState& a = r.an[k];
-      std::string sf, sa;
-      char b[32];
-      for (const FePair& p : f.pairs) {
-        std::snprintf(b, sizeof b, "%s%.3f", sf.empty() ? "" : " / ", p.load_share);
-        sf += b;
-      }
-      for (const PairState& p : a.pairs) {
-        std::snprintf(b, sizeof b, "%s%.3f", sa.empty() ? "" : " / ", p.load_share);
-        sa += b;
-      }
-      std::printf("| %s | %.3f | %zu | %.4g | %.4g | %+.3f | %s | %s | %.3f | %d | %d | %.1f |\n", r.problem.c_str(),
-                  f.travel / r.pitch - 1, f.pairs.size(), f.stiffness, a.stiffness,
-                  a.stiffness / f.stiffness - 1, sf.c_str(), sa.c_str(), f.load_fraction, f.ccx_runs, f.elements,
-                  f.seconds);
-    }
+  std::vector<Row> rows;
+  for (const std::string& name : problems) {
+    const Drive d = load_problem(problem_path(name));
+    FeComparisonOptions opt;
+    opt.positions = positions;
+    opt.fe.level = level;
+    opt.fe.ccx.time_limit_seconds = time_limit;
+    opt.threads = static_cast<unsigned>(threads);
+    std::fprintf(stderr, "  comparing %s ...\n", stem(name).c_str());
+    rows.push_back({stem(name), d.load.force, compare_with_fe(d, opt)});
   }
 
-  std::printf("\nSummary (errors of the analytic model against FE, level %d):\n\n", level);
-  std::printf("| problem | positions | K error max | K error mean | K_an mean / K_FE mean | share error max | "
-              "pinion compliance an/FE | rack compliance an/FE | F2 / load.force | FE s per position | "
+  std::printf("Summary (level %d, %d positions over one mesh period, errors of the analytic model against FE: "
+              "(analytic − FE) / FE, shares analytic − FE; compliances at every pair's contact at every position):\n\n",
+              level, positions);
+  std::printf("| problem | K error max | K error mean | share error max | pinion compliance error max | "
+              "rack compliance error max | F₂ / load.force | FE s per position (mesh + teeth) | "
               "analytic s per position | FE / analytic time |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows) {
-    double emax = 0, esum = 0, kf = 0, ka = 0, smax = 0, fmin = INFINITY, fmax = 0, tsum = 0;
-    for (std::size_t k = 0; k < r.fe.size(); ++k) {
-      const FePosition& f = r.fe[k];
-      const MeshState& a = r.an[k];
-      const double e = a.stiffness / f.stiffness - 1;
-      if (std::abs(e) > std::abs(emax)) emax = e;
-      esum += e;
-      kf += f.stiffness;
-      ka += a.stiffness;
-      if (f.pairs.size() == a.pairs.size()) {
-        for (std::size_t j = 0; j < f.pairs.size(); ++j) {
-          smax = std::max(smax, std::abs(a.pairs[j].load_share - f.pairs[j].load_share));
-        }
+    const FeComparisonSummary& s = r.c.summary;
+    double emax = 0, esum = 0, fmin = INFINITY, fmax = 0, pmax = 0, rmax = 0;
+    for (const ComparedPosition& p : r.c.rows) {
+      if (std::abs(p.k_error) > std::abs(emax)) emax = p.k_error;
+      esum += p.k_error;
+      fmin = std::min(fmin, p.fe_force / r.load);
+      fmax = std::max(fmax, p.fe_force / r.load);
+      for (const ComparedPair& q : p.pairs) {
+        if (std::abs(q.pinion_error) > std::abs(pmax)) pmax = q.pinion_error;
+        if (std::abs(q.rack_error) > std::abs(rmax)) rmax = q.rack_error;
       }
-      fmin = std::min(fmin, f.load_fraction);
-      fmax = std::max(fmax, f.load_fraction);
-      tsum += f.seconds;
     }
-    const auto range = [](const std::vector<ToothComplianceFe>& v) {
-      double lo = INFINITY, hi = 0;
-      for (const auto& c : v) {
-        lo = std::min(lo, c.analytic / c.compliance);
-        hi = std::max(hi, c.analytic / c.compliance);
-      }
-      char b[32];
-      std::snprintf(b, sizeof b, "%.3f–%.3f", lo, hi);
-      return std::string(b);
-    };
-    const double n = static_cast<double>(r.fe.size());
-    std::printf("| %s | %zu | %+.3f | %+.3f | %.3f | %.3f | %s | %s | %.2f–%.2f | %.1f | %.2e | %.1e |\n",
-                r.problem.c_str(), r.fe.size(), emax, esum / n, ka / kf, smax, range(r.pinion).c_str(),
-                range(r.rack).c_str(), fmin, fmax, tsum / n, r.analytic_s, tsum / n / r.analytic_s);
+    std::printf("| %s | %+.3f | %+.3f | %.3f | %+.3f | %+.3f | %.2f–%.2f | %.1f (%.1f + %.1f) | %.2e | %.1e |\n",
+                r.problem.c_str(), emax, esum / static_cast<double>(r.c.rows.size()), s.max_share_error, pmax, rmax,
+                fmin, fmax, s.fe_seconds_per_position, s.fe_mesh_seconds_per_position,
+                s.fe_seconds_per_position - s.fe_mesh_seconds_per_position, s.analytic_seconds_per_position,
+                s.time_ratio);
   }
 
-  std::printf("\nSingle-tooth compliances (level %d, e-9 m/N for the face width; contacts at 2 %% of the path from "
-              "its start, the pitch point, 2 %% from its end):\n\n",
-              level);
-  std::printf("| problem | member | s [mm] | FE | analytic | analytic / FE | elements | wall s |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("\nPer position (K in N/m; shares and compliance errors per pair, nearest the pinion tip first):\n\n");
+  std::printf("| problem | X − X₀ [p] | K_FE | K_an | K error | shares FE | shares analytic | pinion error | "
+              "rack error | F₂ / load.force | elements | mesh solve s |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows) {
-    for (const auto* v : {&r.pinion, &r.rack}) {
-      for (const ToothComplianceFe& c : *v) {
-        std::printf("| %s | %s | %.2f | %.4g | %.4g | %.3f | %d | %.1f |\n", r.problem.c_str(),
-                    c.member == ToothMember::kPinion ? "pinion" : "rack", c.s * 1e3, c.compliance * 1e9,
-                    c.analytic * 1e9, c.analytic / c.compliance, c.elements, c.seconds);
+    for (const ComparedPosition& p : r.c.rows) {
+      std::string sf, sa, pe, re;
+      char b[40];
+      for (const ComparedPair& q : p.pairs) {
+        const char* sep = sf.empty() ? "" : " / ";
+        std::snprintf(b, sizeof b, "%s%.3f", sep, q.share_fe);
+        sf += b;
+        std::snprintf(b, sizeof b, "%s%.3f", sep, q.share_analytic);
+        sa += b;
+        std::snprintf(b, sizeof b, "%s%+.3f", sep, q.pinion_error);
+        pe += b;
+        std::snprintf(b, sizeof b, "%s%+.3f", sep, q.rack_error);
+        re += b;
       }
+      std::printf("| %s | %.3f | %.4g | %.4g | %+.3f | %s | %s | %s | %s | %.3f | %d | %.1f |\n", r.problem.c_str(),
+                  (p.travel - r.c.period_start) / r.c.pitch, p.k_fe, p.k_analytic, p.k_error, sf.c_str(), sa.c_str(),
+                  pe.c_str(), re.c_str(), p.fe_force / r.load, p.elements, p.fe_mesh_seconds);
     }
   }
 }
 
 // ---- window ------------------------------------------------------------------------
 
-void window_table(const std::vector<std::string>& problems, int level, int threads) {
+void window_table(const std::vector<std::string>& problems, int level, int threads, double time_limit) {
   struct Row {
     std::string problem, zone;
     double X = 0, pitch = 0, rb = 0;
@@ -375,9 +340,10 @@ void window_table(const std::vector<std::string>& problems, int level, int threa
   std::vector<std::function<void()>> jobs;
   for (Row& r : rows) {
     if (std::isnan(r.X)) continue;
-    jobs.push_back([&r, level] {
+    jobs.push_back([&r, level, time_limit] {
       FeOptions o;
       o.level = level;
+      o.ccx.time_limit_seconds = time_limit;
       MeshPositionTuning t;
       t.step_fractions = {0.2, 0.5, 0.6, 1.0};
       r.p = fe_mesh_position(load_problem(problem_path(r.problem)), r.X, o, t);
@@ -423,6 +389,8 @@ int main(int argc, char** argv) {
         a.levels.clear();
         for (const std::string& l : split(value())) a.levels.push_back(std::stoi(l));
       } else if (k == "--threads") a.threads = std::stoi(value());
+      else if (k == "--max-pair-level") a.max_pair_level = std::stoi(value());
+      else if (k == "--time-limit") a.time_limit_seconds = std::stod(value());
       else throw std::invalid_argument("unknown option " + k + " (see the comment at the top of bench/fe_accuracy.cpp)");
     }
     if (a.positions < 1 || a.threads < 1 || a.levels.empty()) throw std::invalid_argument("bad --positions/--threads/--levels");
@@ -430,17 +398,18 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     if (a.table == "levels" || a.table == "all") {
       std::printf("### FE levels: discretisation error and cost\n\n");
-      levels_table(a.problems.empty() ? two : a.problems, a.levels, a.threads);
+      levels_table(a.problems.empty() ? two : a.problems, a.levels, a);
       std::printf("\n");
     }
     if (a.table == "window" || a.table == "all") {
       std::printf("### Load window of the secant K (level %d)\n\n", a.levels.front());
-      window_table(a.problems.empty() ? two : a.problems, a.levels.front(), a.threads);
+      window_table(a.problems.empty() ? two : a.problems, a.levels.front(), a.threads, a.time_limit_seconds);
       std::printf("\n");
     }
     if (a.table == "compare" || a.table == "all") {
       std::printf("### Analytic model against FE\n\n");
-      compare_table(a.problems.empty() ? all_problems() : a.problems, a.positions, a.levels.front(), a.threads);
+      compare_table(a.problems.empty() ? all_problems() : a.problems, a.positions, a.levels.front(), a.threads,
+                    a.time_limit_seconds);
       std::printf("\n");
     }
     std::fprintf(stderr, "fe_accuracy: %.0f s\n",

@@ -40,13 +40,19 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   rigid.effects.rack_span = RackSpanModel::kRigid;
   const MeshState analytic = MeshStiffnessModel(rigid).at(X);
 
-  const FePosition a = fe_mesh_position(d, X);
-  const FePosition b = fe_mesh_position(d, X + pitch);
+  // This small drive is stiffer against the analytic model (K_FE / K_an
+  // ~0.67) than the shipped problems the default ratio is calibrated on:
+  // aim with its own ratio so that each solve is one ccx run.
+  MeshPositionTuning aimed;
+  aimed.predicted_stiffness_ratio = 0.66;
+  const FePosition a = fe_mesh_position(d, X, FeOptions{}, aimed);
+  const FePosition b = fe_mesh_position(d, X + pitch, FeOptions{}, aimed);
   for (const FePosition* p : {&a, &b}) {
     EXPECT_GT(p->stiffness, 0);
     EXPECT_GT(p->force, 0);
     // The last step reaches the drive's load (one run or a corrected second one).
     EXPECT_NEAR(p->load_fraction, 1.0, 0.1);
+    EXPECT_EQ(p->ccx_runs, 1);
     EXPECT_NEAR(p->force, p->load_fraction * d.load.force, 1e-9 * d.load.force);
     ASSERT_EQ(p->pairs.size(), analytic.pairs.size());
     // Each pair's share from its own contact force; their sum is not forced.
@@ -63,7 +69,7 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   for (std::size_t k = 0; k < a.pairs.size(); ++k) EXPECT_NEAR(b.pairs[k].load_share, a.pairs[k].load_share, 5e-3);
 
   // Doubling the penalty slope moves K by less than 0.1 %.
-  MeshPositionTuning stiffer;
+  MeshPositionTuning stiffer = aimed;
   stiffer.penalty_factor *= 2;
   const FePosition c = fe_mesh_position(d, X, FeOptions{}, stiffer);
   EXPECT_LT(std::abs(c.stiffness / a.stiffness - 1), 1e-3);
@@ -98,12 +104,15 @@ TEST(MeshPositionFe, LoadWindowAndTheCorrectedSecondRun) {
   }
   // K is the secant from the first to the last step; the lower window
   // (0.2-0.6 of the load) gives nearly the same: the contact stiffens a
-  // little with load (Hertz), the rest of the mesh is linear.
+  // little with load (the Hertz approach grows less than linearly), the rest
+  // of the mesh is linear. Measured: +2.1 % here, +1.1..2.0 % on the
+  // shipped problems (docs/models/fe_reference.md, "Load level").
   const auto secant = [&](std::size_t a, std::size_t b) {
     return (p.step_forces[b] - p.step_forces[a]) / (p.step_rotations[b] - p.step_rotations[a]);
   };
-  EXPECT_NEAR(secant(0, 2) / secant(0, 1), 1.0, 0.02);
-  EXPECT_GE(secant(1, 2), secant(0, 1) * (1 - 1e-4));  // not softening with load
+  EXPECT_GT(secant(0, 2) / secant(0, 1), 1.0);
+  EXPECT_LT(secant(0, 2) / secant(0, 1), 1.04);
+  EXPECT_GT(secant(1, 2), secant(0, 1));  // the upper window stiffer still
 }
 
 TEST(MeshPositionFe, BadTuningIsRefusedBeforeAnyFeWork) {
