@@ -4,12 +4,15 @@
 // secant between them, so an initial micro-gap does not enter it.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_options.hpp"
 
 namespace rackopt::fe {
+
+struct DeformedShape;  // fe/deformed_shape.hpp
 
 // One tooth pair that carries load in the FE solution.
 struct FePair {
@@ -28,6 +31,9 @@ struct FePosition {
   std::vector<FePair> pairs;  // ordered by s, descending (as MeshState)
   int nodes = 0, elements = 0;
   double seconds = 0;         // wall time of mesh + solve
+  // The meshes and displacements at the last step when options.keep_shape,
+  // else null (fe/deformed_shape.hpp).
+  std::shared_ptr<const DeformedShape> shape;
 };
 
 // FE mesh state at travel X of `drive`: the pairs MeshStiffnessModel::at(X)
