@@ -21,11 +21,11 @@
 namespace rackopt::cli {
 namespace {
 
-// --pictures: the mesh and the deformed shape of the first position. The
-// first position lies in the multi-pair zone just after a pair enters mesh
-// (docs/fe.md, "Where the positions are"), so one picture shows the load
-// shared between pairs and the refinement at every contact; the meshes of
-// the other positions follow the same rules.
+// --pictures: the mesh and the deformed shape of the first position. It lies
+// p/(2N) after a pair enters mesh, in the multi-pair zone for a contact
+// ratio above 1 + 1/(2N) (docs/fe.md, "Pictures"), so one picture shows the
+// load shared between pairs and the refinement at every contact; the meshes
+// of the other positions follow the same rules.
 void draw_pictures(const fe::FeComparison& c, const std::string& title, const std::string& dir, fe::FeFiles& files,
                    std::vector<std::string>& warnings) {
   if (c.rows.empty() || !c.rows.front().shape) {
