@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,13 @@ void draw_pictures(const fe::FeComparison& c, const std::string& title, const st
     return;
   }
   const fe::DeformedShape& shape = *c.rows.front().shape;
-  const fe::ShapeScale scale = fe::shape_scale(shape, fe::shape_window(shape));
+  fe::ShapeScale scale;
+  try {
+    scale = fe::shape_scale(shape, fe::shape_window(shape));
+  } catch (const std::runtime_error& e) {  // nothing moved in view: a picture is a convenience, not a result
+    warnings.push_back(std::string("no pictures: ") + e.what());
+    return;
+  }
   files.pictures.asked = true;
   files.pictures.travel = shape.travel;
   files.pictures.displacement_scale = scale.factor;
