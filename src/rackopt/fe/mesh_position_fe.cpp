@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "rackopt/fe/ccx_contact_deck.hpp"
+#include "rackopt/fe/deformed_shape.hpp"
 #include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
 #include "rackopt/stiffness/hertz.hpp"
@@ -109,6 +110,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   for (const FlankContact& c : pl.contacts) cm.contacts.push_back({0, c.pinion_set, 1, c.rack_set});
   cm.penalty_slope = tuning.penalty_factor * e_star / h_c;
   cm.reaction_sets = {{0, "BORE"}};
+  cm.print_displacements = options.keep_shape;
   const std::vector<int>& bore = pinion.node_set("BORE");
   std::vector<double> theta(fr.size()), F(fr.size());
   std::vector<ContactStepResult> r;
@@ -187,6 +189,9 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   out.nodes = static_cast<int>(pinion.nodes.size() + rack.nodes.size());
   out.elements = static_cast<int>(pinion.triangles.size() + rack.triangles.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.keep_shape) {
+    out.shape = std::make_shared<const DeformedShape>(make_deformed_shape(cm, r.back(), pl, m, options.level, theta2));
+  }
   return out;
 }
 

@@ -4,12 +4,15 @@
 // secant between them, so an initial micro-gap does not enter it.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_options.hpp"
 
 namespace rackopt::fe {
+
+struct DeformedShape;  // fe/deformed_shape.hpp
 
 // One tooth pair that carries load in the FE solution.
 struct FePair {
@@ -32,6 +35,9 @@ struct FePosition {
   int ccx_runs = 1;           // 2 when the first run missed the load by more than the tolerance
   int nodes = 0, elements = 0;
   double seconds = 0;         // wall time of mesh + solve(s)
+  // The meshes and displacements at the last step when options.keep_shape,
+  // else null (fe/deformed_shape.hpp).
+  std::shared_ptr<const DeformedShape> shape;
 };
 
 // FE mesh state at travel X of `drive`: the pairs MeshStiffnessModel::at(X)
