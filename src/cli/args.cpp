@@ -57,6 +57,8 @@ Args parse_args(int argc, char** argv) {
       a.extended_contact = true;
     } else if (s == "--pictures") {
       a.pictures = true;
+    } else if (s == "--rack-supports") {
+      a.rack_supports = true;
     } else if (s == "--json") {
       a.json = true;
     } else if (s == "--resume") {

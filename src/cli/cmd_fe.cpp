@@ -62,6 +62,7 @@ int cmd_fe(const Args& a) {
   opt.fe.level = a.level >= 0 ? a.level : 0;
   opt.fe.extended_contact = a.extended_contact;
   opt.fe.keep_shape = a.pictures;
+  opt.fe.rack_on_supports = a.rack_supports;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
   opt.stop = [] { return stop_requested(); };
 

@@ -79,6 +79,10 @@ void check(const ContactModel& m) {
       if (!std::isfinite(v)) fail("support value is not finite");
     }
   }
+  for (const BodyEquation& e : m.equations) {
+    if (e.body < 0 || e.body >= nb) fail("equation on body " + std::to_string(e.body));
+    check_equations({e.equation}, static_cast<int>(m.bodies[e.body].mesh.nodes.size()), "contact model");
+  }
   for (const ContactSurfaces& c : m.contacts) {
     if (c.slave_body < 0 || c.slave_body >= nb || c.master_body < 0 || c.master_body >= nb) fail("contact on a body not in the model");
     m.bodies[c.slave_body].mesh.node_set(c.slave_set);  // throws naming the set
@@ -157,6 +161,7 @@ std::string ccx_contact_deck(const ContactModel& m, double slice_thickness) {
     o << "*SOLID SECTION, ELSET=E_" << upper(body.name) << ", MATERIAL=M_" << upper(body.name) << "\n"
       << slice_thickness << "\n";
   }
+  for (const BodyEquation& e : m.equations) write_ccx_equations(o, {e.equation}, node_off[e.body]);
   if (!m.contacts.empty()) {
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
       const ContactSurfaces& c = m.contacts[k];

@@ -44,9 +44,16 @@ struct SteppedDisplacement {
   std::vector<double> values;
 };
 
+// A linear constraint between the nodes of one body (plane_stress_model.hpp).
+struct BodyEquation {
+  int body = 0;
+  NodeEquation equation;
+};
+
 struct ContactModel {
   std::vector<ContactBody> bodies;
   std::vector<SteppedDisplacement> supports;
+  std::vector<BodyEquation> equations;  // ties within a body (a hinge's rigid patch)
   std::vector<ContactSurfaces> contacts;
   double penalty_slope = 0;  // Pa/m
   int steps = 1;

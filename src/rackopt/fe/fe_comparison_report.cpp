@@ -90,6 +90,7 @@ std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const 
   j.key("level").value(c.fe.level);
   j.key("extended_contact").value(c.fe.extended_contact);
   j.key("rack_body_depth").value(c.fe.rack_body_depth);
+  j.key("rack_on_supports").value(c.fe.rack_on_supports);
   j.key("threads").value(static_cast<long>(c.threads));
   j.end_object();
   j.key("conventions").begin_array();
@@ -206,7 +207,8 @@ std::string fe_comparison_gnuplot(const FeComparison& c, const std::string& titl
   o << "EOD\n";
   o << "set terminal pngcairo size 1200,700 noenhanced font ',11'\n";
   o << "set output '" << png_name << "'\n";
-  o << "set title '" << title << ": mesh stiffness, analytic (rigid rack body) vs FE, level " << c.fe.level << "'\n";
+  o << "set title '" << title << ": mesh stiffness, analytic (" << (c.fe.rack_on_supports ? "rack on its supports" : "rigid rack body")
+    << ") vs FE, level " << c.fe.level << "'\n";
   o << "set grid\nset key outside right\n";
   o << "set xlabel 'travel of the pitch point [m]'\nset ylabel 'mesh stiffness [MN/m]'\n";
   o << "plot $analytic using 1:($2/1e6) with lines lw 2 title 'analytic', \\\n"
@@ -218,7 +220,8 @@ std::string fe_comparison_summary(const FeComparison& c) {
   std::ostringstream o;
   o << "  FE vs analytic over one mesh period (" << c.rows.size() << " positions from X0 = "
     << fmt("%.6g", c.period_start) << " m, pitch " << fmt("%.4g", c.pitch * 1e3) << " mm; level " << c.fe.level
-    << (c.fe.extended_contact ? ", extended contact" : "") << ", " << c.threads << " thread"
+    << (c.fe.extended_contact ? ", extended contact" : "") << (c.fe.rack_on_supports ? ", rack on its supports" : "")
+    << ", " << c.threads << " thread"
     << (c.threads == 1 ? "" : "s") << "):\n";
   for (const ComparedPosition& r : c.rows) {
     o << "    X = " << fmt("%.6g", r.travel) << " m: K FE " << mnm(r.k_fe) << ", analytic " << mnm(r.k_analytic)
@@ -244,7 +247,8 @@ std::string fe_comparison_markdown(const FeComparison& c) {
   std::ostringstream o;
   o << c.rows.size() << " positions over one mesh period (X0 = " << fmt("%.6g", c.period_start)
     << " m, pitch " << fmt("%.4g", c.pitch * 1e3) << " mm), FE level " << c.fe.level
-    << (c.fe.extended_contact ? ", extended contact" : "") << ". Conventions:\n\n";
+    << (c.fe.extended_contact ? ", extended contact" : "") << (c.fe.rack_on_supports ? ", rack on its supports" : "")
+    << ". Conventions:\n\n";
   for (const std::string& n : c.notes) o << "- " << n << "\n";
   o << "\n| X [m] | K FE [MN/m] | K analytic [MN/m] | K error | pair (rack/pinion) | share FE | share analytic |"
        " pinion FE [um/kN] | pinion analytic | pinion error | rack FE [um/kN] | rack analytic | rack error |\n";
