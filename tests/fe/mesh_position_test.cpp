@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
@@ -38,11 +40,20 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   rigid.effects.rack_span = RackSpanModel::kRigid;
   const MeshState analytic = MeshStiffnessModel(rigid).at(X);
 
-  const FePosition a = fe_mesh_position(d, X);
-  const FePosition b = fe_mesh_position(d, X + pitch);
+  // This small drive is stiffer against the analytic model (K_FE / K_an
+  // ~0.67) than the shipped problems the default ratio is calibrated on:
+  // aim with its own ratio so that each solve is one ccx run.
+  MeshPositionTuning aimed;
+  aimed.predicted_stiffness_ratio = 0.66;
+  const FePosition a = fe_mesh_position(d, X, FeOptions{}, aimed);
+  const FePosition b = fe_mesh_position(d, X + pitch, FeOptions{}, aimed);
   for (const FePosition* p : {&a, &b}) {
     EXPECT_GT(p->stiffness, 0);
     EXPECT_GT(p->force, 0);
+    // The last step reaches the drive's load (one run or a corrected second one).
+    EXPECT_NEAR(p->load_fraction, 1.0, 0.1);
+    EXPECT_EQ(p->ccx_runs, 1);
+    EXPECT_NEAR(p->force, p->load_fraction * d.load.force, 1e-9 * d.load.force);
     ASSERT_EQ(p->pairs.size(), analytic.pairs.size());
     // Each pair's share from its own contact force; their sum is not forced.
     EXPECT_NEAR(share_sum(*p), 1.0, 1e-3);
@@ -58,7 +69,7 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   for (std::size_t k = 0; k < a.pairs.size(); ++k) EXPECT_NEAR(b.pairs[k].load_share, a.pairs[k].load_share, 5e-3);
 
   // Doubling the penalty slope moves K by less than 0.1 %.
-  MeshPositionTuning stiffer;
+  MeshPositionTuning stiffer = aimed;
   stiffer.penalty_factor *= 2;
   const FePosition c = fe_mesh_position(d, X, FeOptions{}, stiffer);
   EXPECT_LT(std::abs(c.stiffness / a.stiffness - 1), 1e-3);
@@ -70,6 +81,56 @@ TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
               c.stiffness / a.stiffness - 1, a.elements, a.seconds);
   EXPECT_GT(ratio, 0.3);
   EXPECT_LT(ratio, 3.0);
+}
+
+TEST(MeshPositionFe, LoadWindowAndTheCorrectedSecondRun) {
+  // Aimed with the analytic stiffness itself (ratio 1), the first run stops
+  // near K_FE / K_an ~ 0.65 of the load: a miss, so the rotations are
+  // corrected along the run's secant and the second run reaches the load.
+  const Drive d = small_drive();
+  const double X = 0.31 * M_PI * d.pinion.module;
+  MeshPositionTuning t;
+  t.predicted_stiffness_ratio = 1.0;
+  t.step_fractions = {0.2, 0.6, 1.0};
+  const FePosition p = fe_mesh_position(d, X, FeOptions{}, t);
+  EXPECT_EQ(p.ccx_runs, 2);
+  EXPECT_NEAR(p.load_fraction, 1.0, 0.1);
+  ASSERT_EQ(p.step_forces.size(), 3u);
+  ASSERT_EQ(p.step_rotations.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.step_forces.back(), p.force);
+  for (std::size_t k = 1; k < 3; ++k) {
+    EXPECT_GT(p.step_forces[k], p.step_forces[k - 1]);
+    EXPECT_NEAR(p.step_rotations[k] / p.step_rotations.back(), t.step_fractions[k], 1e-12);
+  }
+  // K is the secant from the first to the last step; the lower window
+  // (0.2-0.6 of the load) gives nearly the same: the contact stiffens a
+  // little with load (the Hertz approach grows less than linearly), the rest
+  // of the mesh is linear. Measured: +2.1 % here, +1.1..2.0 % on the
+  // shipped problems (docs/models/fe_reference.md, "Load level").
+  const auto secant = [&](std::size_t a, std::size_t b) {
+    return (p.step_forces[b] - p.step_forces[a]) / (p.step_rotations[b] - p.step_rotations[a]);
+  };
+  EXPECT_GT(secant(0, 2) / secant(0, 1), 1.0);
+  EXPECT_LT(secant(0, 2) / secant(0, 1), 1.04);
+  EXPECT_GT(secant(1, 2), secant(0, 1));  // the upper window stiffer still
+}
+
+TEST(MeshPositionFe, BadTuningIsRefusedBeforeAnyFeWork) {
+  FeOptions o;
+  o.ccx.program = "/nonexistent/ccx";
+  const Drive d = small_drive();
+  for (const std::vector<double>& f : {std::vector<double>{1.0}, std::vector<double>{0.5, 0.2, 1.0},
+                                       std::vector<double>{0.0, 1.0}, std::vector<double>{0.2, 0.8}}) {
+    MeshPositionTuning t;
+    t.step_fractions = f;
+    EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
+  }
+  MeshPositionTuning t;
+  t.predicted_stiffness_ratio = 0;
+  EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
+  t = MeshPositionTuning{};
+  t.load_tolerance = -0.1;
+  EXPECT_THROW(fe_mesh_position(d, 0.003, o, t), std::invalid_argument);
 }
 
 TEST(MeshPositionFe, MissingCcxIsCcxNotFound) {

@@ -94,6 +94,37 @@ void check(const ContactModel& m) {
   }
 }
 
+// Every node's displacement at the end of the last step (total time = steps),
+// split by body. The displacements of the unit-thickness body need no
+// scaling: the deck's forces were scaled with the slice.
+void read_displacements(const std::vector<DatBlock>& blocks, const ContactModel& m, const std::vector<int>& node_off,
+                        ContactStepResult& last) {
+  const DatBlock* found = nullptr;
+  for (const DatBlock& blk : blocks) {
+    if (blk.quantity == "displacements" && upper(blk.set) == "NALL" && std::abs(blk.time - m.steps) < 1e-6) found = &blk;
+  }
+  if (!found) throw std::runtime_error("job.dat has no displacements at the end of step " + std::to_string(m.steps));
+  last.displacements.resize(m.bodies.size());
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    last.displacements[b].assign(m.bodies[b].mesh.nodes.size(), Point2{});
+    total += m.bodies[b].mesh.nodes.size();
+  }
+  if (found->rows.size() != total) {
+    throw std::runtime_error("job.dat has displacements of " + std::to_string(found->rows.size()) + " nodes, the bodies " +
+                             std::to_string(total));
+  }
+  for (const auto& [node, v] : found->rows) {
+    const int i = node - 1;
+    std::size_t b = m.bodies.size();
+    while (b > 0 && i < node_off[b - 1]) --b;
+    if (b == 0 || i - node_off[b - 1] >= static_cast<int>(m.bodies[b - 1].mesh.nodes.size())) {
+      throw std::runtime_error("job.dat: displacement of node " + std::to_string(node) + " outside every body");
+    }
+    last.displacements[b - 1][static_cast<std::size_t>(i - node_off[b - 1])] = {v[0], v[1]};
+  }
+}
+
 }  // namespace
 
 std::string ccx_contact_deck(const ContactModel& m, double slice_thickness) {
@@ -161,6 +192,7 @@ std::string ccx_contact_deck(const ContactModel& m, double slice_thickness) {
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
       o << "*CONTACT PRINT, SLAVE=C" << k << "S, MASTER=C" << k << "M\nCF\n";
     }
+    if (m.print_displacements && step + 1 == m.steps) o << "*NODE PRINT, NSET=NALL\nU\n";
     o << "*END STEP\n";
   }
   return o.str();
@@ -210,6 +242,7 @@ std::vector<ContactStepResult> solve_contact(const ContactModel& m, const CcxOpt
             r.contact_force.push_back(found ? Point2{found->force[0] / t, found->force[1] / t} : Point2{});
           }
         }
+        if (m.print_displacements) read_displacements(blocks, m, node_off, results.back());
       },
       options);
   return results;

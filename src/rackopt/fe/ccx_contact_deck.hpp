@@ -59,6 +59,9 @@ struct ContactModel {
   int steps = 1;
   // Node sets (body, set) whose support reactions are read back per node.
   std::vector<std::pair<int, std::string>> reaction_sets;
+  // Also read back every node's displacement at the end of the last step
+  // (for pictures; it makes the .dat file a line per node longer).
+  bool print_displacements = false;
 };
 
 // What one step ended with.
@@ -69,6 +72,9 @@ struct ContactStepResult {
   // whether the pair was in contact at all.
   std::vector<Point2> contact_force;
   std::vector<bool> in_contact;
+  // Per body, per node: the displacement [m]; only in the last step's
+  // result and only when the model asked for it (print_displacements).
+  std::vector<std::vector<Point2>> displacements;
 };
 
 // The deck. Throws std::invalid_argument naming what is wrong (no body, a

@@ -244,6 +244,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
     row.nodes = fp.nodes;
     row.elements = fp.elements;
     row.fe_mesh_seconds = fp.seconds;
+    row.shape = fp.shape;
     for (const FePair& q : fp.pairs) {
       auto it = std::find_if(row.pairs.begin(), row.pairs.end(), [&](const ComparedPair& c) {
         return c.rack_tooth == q.rack_tooth && c.pinion_tooth == q.pinion_tooth;
@@ -253,6 +254,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
         it->share_fe = q.load_share;
       } else {
         row.extended_pairs.push_back(q);
+        row.extended_share_fe += q.load_share;
       }
     }
     sum.max_k_error = std::max(sum.max_k_error, std::abs(row.k_error));

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -84,10 +85,13 @@ struct ComparedPosition {
   double fe_force = 0;            // the FE's mesh force at its second step [N]
   std::vector<ComparedPair> pairs;      // the theoretical pairs, s descending (as MeshState)
   std::vector<FePair> extended_pairs;   // FE pairs off the theoretical ones (extended contact)
+  double extended_share_fe = 0;         // their shares summed: the part of the mesh force they carry
   int nodes = 0, elements = 0;          // of the FE mesh-position model
   double fe_mesh_seconds = 0;     // wall time of the FE mesh-position solve
   double fe_tooth_seconds = 0;    // sum of the single-tooth solves of this position
   double analytic_seconds = 0;    // one MeshStiffnessModel::at (mean of repeated calls)
+  // The FE meshes and displacements when options.fe.keep_shape, else null.
+  std::shared_ptr<const DeformedShape> shape;
 };
 
 struct FeComparisonSummary {

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "rackopt/fe/ccx_contact_deck.hpp"
+#include "rackopt/fe/deformed_shape.hpp"
 #include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
 #include "rackopt/fe/rack_span_fe.hpp"
@@ -50,6 +51,18 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   check_fe_options(options);
   if (!std::isfinite(travel)) throw std::invalid_argument("fe_mesh_position: the travel must be finite");
   if (!(tuning.penalty_factor > 0)) throw std::invalid_argument("fe_mesh_position: the penalty factor must be positive");
+  if (!(tuning.predicted_stiffness_ratio > 0)) {
+    throw std::invalid_argument("fe_mesh_position: the predicted stiffness ratio must be positive");
+  }
+  if (!(tuning.load_tolerance > 0)) throw std::invalid_argument("fe_mesh_position: the load tolerance must be positive");
+  {
+    const std::vector<double>& f = tuning.step_fractions;
+    bool ok = f.size() >= 2 && f.front() > 0 && f.back() == 1.0;
+    for (std::size_t k = 1; k < f.size(); ++k) ok = ok && f[k] > f[k - 1];
+    if (!ok) {
+      throw std::invalid_argument("fe_mesh_position: the step fractions must rise from above 0 to 1 (at least two)");
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   // The analytic model with a rigid rack body: the pairs, their shares for
   // sizing, and the stiffness that predicts the hub rotation for the load.
@@ -115,45 +128,79 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   const Mesh2D& pinion = cm.bodies[0].mesh;
   const Mesh2D& rack = cm.bodies[1].mesh;
 
-  // Hub rotation: theta2 aims at the drive's load with the analytic
-  // (rigid-body) stiffness, theta1 at a fifth of it.
-  const double theta2 = drive.load.force / stiffness_for_steps(drive, options, travel, analytic.stiffness) / rb,
-               theta1 = 0.2 * theta2;
-  cm.steps = 2;
-  for (int n : pinion.node_set("BORE")) {
-    const Point2 p = pinion.nodes[n];
-    cm.supports.push_back({0, n, 1, {-theta1 * (p.y - o.y), -theta2 * (p.y - o.y)}});
-    cm.supports.push_back({0, n, 2, {theta1 * (p.x - o.x), theta2 * (p.x - o.x)}});
-  }
-  if (options.rack_on_supports) {
-    for (const PrescribedDisplacement& d : span.hinges.supports) cm.supports.push_back({1, d.node, d.dof, {0, 0}});
-    for (const NodeEquation& e : span.hinges.equations) cm.equations.push_back({1, e});
-  } else {
-    for (int n : rack.node_set("BASE")) {
-      cm.supports.push_back({1, n, 1, {0, 0}});
-      cm.supports.push_back({1, n, 2, {0, 0}});
-    }
-  }
+  // Hub rotation: the last step aims at the drive's load with the analytic
+  // (rigid-body) stiffness times the calibrated FE/analytic ratio; the
+  // earlier steps at the given fractions of it.
+  const std::vector<double>& fr = tuning.step_fractions;
+  cm.steps = static_cast<int>(fr.size());
   for (const FlankContact& c : pl.contacts) cm.contacts.push_back({0, c.pinion_set, 1, c.rack_set});
   cm.penalty_slope = tuning.penalty_factor * e_star / h_c;
   cm.reaction_sets = {{0, "BORE"}};
-  const std::vector<ContactStepResult> r = solve_contact(cm, options.ccx);
-
-  // Torque of the hub on the pinion about its centre, per unit thickness,
-  // and the mesh force along the line of action it balances.
-  double F[2];
-  for (int k = 0; k < 2; ++k) {
-    double torque = 0;
-    for (const auto& [n, f] : r[k].reactions[0]) {
+  cm.print_displacements = options.keep_shape;
+  const std::vector<int>& bore = pinion.node_set("BORE");
+  if (options.rack_on_supports)
+    for (const NodeEquation& e : span.hinges.equations) cm.equations.push_back({1, e});
+  std::vector<double> theta(fr.size()), F(fr.size());
+  std::vector<ContactStepResult> r;
+  const auto run = [&](double theta_last) {
+    for (std::size_t k = 0; k < fr.size(); ++k) theta[k] = fr[k] * theta_last;
+    cm.supports.clear();
+    for (int n : bore) {
       const Point2 p = pinion.nodes[n];
-      torque += (p.x - o.x) * f.y - (p.y - o.y) * f.x;
+      SteppedDisplacement u{0, n, 1, {}}, v{0, n, 2, {}};
+      for (double t : theta) {
+        u.values.push_back(-t * (p.y - o.y));
+        v.values.push_back(t * (p.x - o.x));
+      }
+      cm.supports.push_back(u);
+      cm.supports.push_back(v);
     }
-    F[k] = torque / rb;
+    if (options.rack_on_supports) {
+      for (const PrescribedDisplacement& d : span.hinges.supports)
+        cm.supports.push_back({1, d.node, d.dof, std::vector<double>(fr.size(), 0.0)});
+    } else {
+      for (int n : rack.node_set("BASE")) {
+        cm.supports.push_back({1, n, 1, std::vector<double>(fr.size(), 0.0)});
+        cm.supports.push_back({1, n, 2, std::vector<double>(fr.size(), 0.0)});
+      }
+    }
+    r = solve_contact(cm, options.ccx);
+    // Torque of the hub on the pinion about its centre, per unit thickness,
+    // and the mesh force along the line of action it balances.
+    for (std::size_t k = 0; k < fr.size(); ++k) {
+      double torque = 0;
+      for (const auto& [n, f] : r[k].reactions[0]) {
+        const Point2 p = pinion.nodes[n];
+        torque += (p.x - o.x) * f.y - (p.y - o.y) * f.x;
+      }
+      F[k] = torque / rb;
+    }
+  };
+  const double target = drive.load.force / width;  // per unit thickness, as F
+  run(target / (tuning.predicted_stiffness_ratio *
+                stiffness_for_steps(drive, options, travel, analytic.stiffness) / width) / rb);
+  int runs = 1;
+  if (std::abs(F.back() / target - 1) > tuning.load_tolerance) {
+    // Missed: aim again along the measured secant, F(theta) ~ a + k theta
+    // (nearly linear once the flanks touch; a < 0 holds a micro-gap).
+    const double k_sec = (F.back() - F.front()) / (theta.back() - theta.front());
+    if (!(k_sec > 0)) throw std::runtime_error("fe_mesh_position: the hub rotation raised no mesh force");
+    const double a = F.front() - k_sec * theta.front();
+    run((target - a) / k_sec);
+    runs = 2;
   }
+  const double theta1 = theta.front(), theta2 = theta.back();
+
   FePosition out;
   out.travel = travel;
-  out.stiffness = (F[1] - F[0]) / (rb * (theta2 - theta1)) * width;
-  out.force = F[1] * width;
+  out.stiffness = (F.back() - F.front()) / (rb * (theta2 - theta1)) * width;
+  out.force = F.back() * width;
+  out.load_fraction = out.force / drive.load.force;
+  out.ccx_runs = runs;
+  for (std::size_t k = 0; k < fr.size(); ++k) {
+    out.step_rotations.push_back(theta[k]);
+    out.step_forces.push_back(F[k] * width);
+  }
   for (std::size_t k = 0; k < pl.contacts.size(); ++k) {
     const FlankContact& c = pl.contacts[k];
     // Frictionless contact on a straight rack flank: the force is along its normal, the LOA.
@@ -161,14 +208,14 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
       const Point2 f = r[static_cast<std::size_t>(step)].contact_force[k];
       return std::abs(f.x * pl.loa_direction.x + f.y * pl.loa_direction.y);
     };
-    const double f1 = along(0), f2 = along(1);
-    if (!c.theoretical && !(f2 > 1e-6 * F[1])) continue;  // a neighbour that stayed apart
+    const double f1 = along(0), f2 = along(cm.steps - 1);
+    if (!c.theoretical && !(f2 > 1e-6 * F.back())) continue;  // a neighbour that stayed apart
     FePair p;
     p.rack_tooth = c.rack_tooth;
     p.pinion_tooth = c.pinion_tooth;
     p.s = c.s;
     p.theoretical = c.theoretical;
-    p.load_share = (f2 - f1) / (F[1] - F[0]);
+    p.load_share = (f2 - f1) / (F.back() - F.front());
     p.force = f2 * width;
     out.pairs.push_back(p);
   }
@@ -176,6 +223,9 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   out.nodes = static_cast<int>(pinion.nodes.size() + rack.nodes.size());
   out.elements = static_cast<int>(pinion.triangles.size() + rack.triangles.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.keep_shape) {
+    out.shape = std::make_shared<const DeformedShape>(make_deformed_shape(cm, r.back(), pl, m, options.level, theta2));
+  }
   return out;
 }
 
