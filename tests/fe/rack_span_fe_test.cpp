@@ -68,7 +68,7 @@ double timoshenko_deflection(double P, double a) {
   return P * a * a * b * b / (3 * kE * I * kSpan) + P * a * b / (5.0 / 6.0 * G * A * kSpan);
 }
 
-TEST(RackSpanFe, HingedBeamAgainstTimoshenkoAndThePatchHeightHardlyMatters) {
+TEST(RackOnSupportsFe, HingedBeamAgainstTimoshenkoAndThePatchHeightHardlyMatters) {
   const double q = 1e6, P = q * kDepth / 4;  // N/m of thickness
   const double c = 0.1 * kDepth;
   for (double a : {kSpan / 2, 3 * kDepth}) {
@@ -93,7 +93,7 @@ TEST(RackSpanFe, HingedBeamAgainstTimoshenkoAndThePatchHeightHardlyMatters) {
   }
 }
 
-TEST(RackSpanFe, HorizontalLoadSplitsAsTheBarsInParallelOrGoesToThePin) {
+TEST(RackOnSupportsFe, HorizontalLoadSplitsAsTheBarsInParallelOrGoesToThePin) {
   // A horizontal traction on the top face: the axial force P and the couple
   // P depth / 2. In beam theory the couple gives no horizontal reaction at
   // hinges on the axis, and the axial force splits b/l : a/l (pin-pin).
@@ -126,7 +126,7 @@ double share_sum(const FePosition& p) {
 // One position at mid-span (two ccx contact solves, the longest part of the
 // suite here); the same checks near a hinge and on shipped problems are in
 // rack_supports_table_test.cpp (a command, docs/models/fe_reference.md).
-TEST(RackSpanFe, MeshPositionOnTheSupportsAtMidSpan) {
+TEST(RackOnSupportsFe, MeshPositionOnTheSupportsAtMidSpan) {
   const Drive d = small_span_drive();
   const double pitch = M_PI * d.pinion.module;
   FeOptions on;
@@ -152,7 +152,7 @@ TEST(RackSpanFe, MeshPositionOnTheSupportsAtMidSpan) {
   EXPECT_LT(p.stiffness / an.stiffness, 3.0);
 }
 
-TEST(RackSpanFe, PositionTooNearAHingeOrAcrossAJointIsRefused) {
+TEST(RackOnSupportsFe, PositionTooNearAHingeOrAcrossAJointIsRefused) {
   const Drive d = small_span_drive();
   FeOptions on;
   on.rack_on_supports = true;
@@ -161,7 +161,7 @@ TEST(RackSpanFe, PositionTooNearAHingeOrAcrossAJointIsRefused) {
   EXPECT_THROW(fe_mesh_position(d, d.rack.span, on), std::invalid_argument);
 }
 
-TEST(RackSpanFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
+TEST(RackOnSupportsFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
   FeOptions on;
   on.rack_on_supports = true;
   // The gantry rack is a rectangular body as wide as the teeth: its own section.
@@ -183,7 +183,7 @@ TEST(RackSpanFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
   EXPECT_NEAR(ls.rack.section.neutral_axis_depth, 0.1, 1e-15);
 }
 
-TEST(RackSpanFe, EquationsGoToTheDeckAndBadOnesAreRefused) {
+TEST(RackOnSupportsFe, EquationsGoToTheDeckAndBadOnesAreRefused) {
   PlaneStressModel m;
   m.mesh = mesh_polygon(hinged_beam_outline(kSpan, kDepth, 0.003, 0.2, 0.21), kDepth / 2);
   m.youngs_modulus = kE;
@@ -203,7 +203,7 @@ TEST(RackSpanFe, EquationsGoToTheDeckAndBadOnesAreRefused) {
   EXPECT_THROW(ccx_deck(m, 1e-4), std::invalid_argument);  // dof 3
 }
 
-TEST(RackSpanFe, BadHingesAreRefused) {
+TEST(RackOnSupportsFe, BadHingesAreRefused) {
   EXPECT_THROW(hinged_beam_outline(kSpan, kDepth, kDepth, 0.1, 0.2), std::invalid_argument);
   EXPECT_THROW(hinged_beam_outline(kSpan, kDepth, 0.003, 0.2, 0.1), std::invalid_argument);
   const Polygon2D p = hinged_beam_outline(kSpan, kDepth, 0.003, 0.2, 0.21);

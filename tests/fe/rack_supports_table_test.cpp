@@ -43,7 +43,7 @@ double cpu_seconds() {
   return t;
 }
 
-TEST(RackSpanFe, DISABLED_RackSupportsTable) {
+TEST(RackOnSupportsFe, DISABLED_RackSupportsTable) {
   const char* env = std::getenv("RACKOPT_FE_PROBLEMS");
   std::istringstream names(env ? env : "gantry_axis rack_railway");
   std::string name;
@@ -96,7 +96,7 @@ TEST(RackSpanFe, DISABLED_RackSupportsTable) {
 // Element counts of the span rack alone (meshing only, no ccx): every
 // shipped problem and the railway drive with module 10 mm on its 2.4 m span
 // (76 teeth). Same command with --gtest_filter='*SpanRackElementCounts*'.
-TEST(RackSpanFe, DISABLED_SpanRackElementCounts) {
+TEST(RackOnSupportsFe, DISABLED_SpanRackElementCounts) {
   for (const auto& [name, set] : std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"gantry_axis", {}}, {"large_module", {}}, {"rack_railway", {}}, {"ship_lift", {}},
            {"rack_railway", {"pinion.module=10 mm", "pinion.bore_radius=50 mm"}}}) {
