@@ -18,7 +18,7 @@ struct FePair {
   double s = 0;            // LOA coordinate of the theoretical contact [m]
   bool theoretical = true; // false: an extended-contact pair (neighbouring flanks)
   double load_share = 0;   // (f2 - f1) / (F2 - F1): the secant share of this pair
-  double force = 0;        // its normal force at the second step [N, whole face width]
+  double force = 0;        // its normal force at the last step [N, whole face width]
 };
 
 struct FePosition {
