@@ -55,6 +55,10 @@ Args parse_args(int argc, char** argv) {
       a.level = static_cast<int>(parse_whole(s, need_value(s), 0, 6));  // FeOptions::level
     } else if (s == "--extended-contact") {
       a.extended_contact = true;
+    } else if (s == "--pictures") {
+      a.pictures = true;
+    } else if (s == "--rack-supports") {
+      a.rack_supports = true;
     } else if (s == "--json") {
       a.json = true;
     } else if (s == "--resume") {

@@ -29,6 +29,8 @@ struct Args {
   int positions = -1;      // --positions N (fe): 1..64; -1 = 4
   int level = -1;          // --level L (fe): 0..6; -1 = 0
   bool extended_contact = false;  // --extended-contact (fe)
+  bool pictures = false;          // --pictures (fe): mesh and deformed shape of the first position
+  bool rack_supports = false;     // --rack-supports (fe)
   std::vector<std::string> given;  // every --option given, in order, without "=value"
 };
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,12 +13,47 @@
 #include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
+#include "rackopt/fe/shape_plot.hpp"
 #include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 namespace rackopt::cli {
+namespace {
+
+// --pictures: the mesh and the deformed shape of the first position. It lies
+// p/(2N) after a pair enters mesh, in the multi-pair zone for a contact
+// ratio above 1 + 1/(2N) (docs/fe.md, "Pictures"), so one picture shows the
+// load shared between pairs and the refinement at every contact; the meshes
+// of the other positions follow the same rules.
+void draw_pictures(const fe::FeComparison& c, const std::string& title, const std::string& dir, fe::FeFiles& files,
+                   std::vector<std::string>& warnings) {
+  if (c.rows.empty() || !c.rows.front().shape) {
+    warnings.push_back("no FE shape came back from the first position: no pictures");
+    return;
+  }
+  const fe::DeformedShape& shape = *c.rows.front().shape;
+  fe::ShapeScale scale;
+  try {
+    scale = fe::shape_scale(shape, fe::shape_window(shape));
+  } catch (const std::runtime_error& e) {  // nothing moved in view: a picture is a convenience, not a result
+    warnings.push_back(std::string("no pictures: ") + e.what());
+    return;
+  }
+  files.pictures.asked = true;
+  files.pictures.travel = shape.travel;
+  files.pictures.displacement_scale = scale.factor;
+  files.pictures.largest_displacement = scale.largest;
+  namespace fs = std::filesystem;
+  write_file_atomic((fs::path(dir) / "fe_mesh.gp").string(), fe::mesh_gnuplot(shape, title, "fe_mesh.png.tmp"));
+  files.mesh_png = render_plot(dir, "fe_mesh.gp", "fe_mesh.png", warnings);
+  write_file_atomic((fs::path(dir) / "fe_deformed.gp").string(),
+                    fe::deformed_gnuplot(shape, title, "fe_deformed.png.tmp"));
+  files.deformed_png = render_plot(dir, "fe_deformed.gp", "fe_deformed.png", warnings);
+}
+
+}  // namespace
 
 int cmd_fe(const Args& a) {
   const Drive drive = load_problem(a.file, a.overrides);
@@ -25,6 +61,8 @@ int cmd_fe(const Args& a) {
   opt.positions = a.positions > 0 ? a.positions : 4;
   opt.fe.level = a.level >= 0 ? a.level : 0;
   opt.fe.extended_contact = a.extended_contact;
+  opt.fe.keep_shape = a.pictures;
+  opt.fe.rack_on_supports = a.rack_supports;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
   opt.stop = [] { return stop_requested(); };
 
@@ -56,6 +94,7 @@ int cmd_fe(const Args& a) {
   write_file_atomic(files.csv, fe::fe_comparison_csv(c));
   write_file_atomic((dir / "fe_stiffness.gp").string(), fe::fe_comparison_gnuplot(c, title, "fe_stiffness.png.tmp"));
   files.plot = render_plot(dir.string(), "fe_stiffness.gp", "fe_stiffness.png", warnings);
+  if (a.pictures) draw_pictures(c, title, dir.string(), files, warnings);
   files.json = (dir / "fe.json").string();
   const std::string json = fe::fe_comparison_json(drive, c, files, warnings);
   write_file_atomic(files.json, json + "\n");
@@ -64,6 +103,13 @@ int cmd_fe(const Args& a) {
   std::string text = title + "\n" + fe::fe_comparison_summary(c);
   text += "  wrote " + files.csv + ", " + files.json + "\n";
   text += files.plot.empty() ? "  no plot (see warnings)\n" : "  plot  " + files.plot + "\n";
+  if (a.pictures) {
+    text += files.mesh_png.empty() ? "  no mesh picture (see warnings)\n" : "  mesh  " + files.mesh_png + "\n";
+    text += files.deformed_png.empty()
+                ? "  no deformed-shape picture (see warnings)\n"
+                : "  deformed shape " + files.deformed_png + " (displacements x " +
+                      std::to_string(static_cast<long long>(files.pictures.displacement_scale + 0.5)) + ")\n";
+  }
   for (const std::string& w : warnings) text += "  warning: " + w + "\n";
   set_immediate_stop_output("");  // our own output follows
   if (a.json) {

@@ -7,7 +7,7 @@
 //   rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]
 //               [--json] [--progress]
 //   rackopt fe FILE [--set key=value]... [--positions N] [--level L]
-//              [--extended-contact] [--out DIR] [--json] [--threads N]
+//              [--extended-contact] [--pictures] [--rack-supports] [--out DIR] [--json] [--threads N]
 //
 // Exit codes (docs/output.md, "Exit codes"): 0 ok, 1 run failed (also a
 // result file that cannot be written), 2 bad input, a usage error or an
@@ -43,11 +43,16 @@ const char* kUsage =
     "      Archard wear along both flanks, wear life, and life at reliability R by\n"
     "      Monte Carlo (problem keys wear, duty, reliability; docs/yaml.md)\n"
     "  rackopt fe FILE [--set key=value]... [--positions N] [--level L]\n"
-    "             [--extended-contact] [--out DIR] [--json] [--threads N]\n"
+    "             [--extended-contact] [--pictures] [--rack-supports] [--out DIR] [--json]\n"
+    "             [--threads N]\n"
     "      the analytic mesh model against finite elements (Gmsh + CalculiX ccx,\n"
     "      Debian calculix-ccx) at N positions over one mesh period (default 4;\n"
     "      1..64), FE level L (0 = coarsest, module/6; 0..6): DIR/fe.csv,\n"
-    "      DIR/fe.json, DIR/fe_stiffness.png (default DIR: out/<problem>_fe); docs/fe.md\n"
+    "      DIR/fe.json, DIR/fe_stiffness.png (default DIR: out/<problem>_fe); --pictures:\n"
+    "      DIR/fe_mesh.png and DIR/fe_deformed.png of the first position;\n"
+    "      --rack-supports: the rack on its hinged supports in both codes (FE: the\n"
+    "      whole span; analytic: the coupled rack-span beam) instead of a rigid body;\n"
+    "      docs/fe.md\n"
     "  rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]\n"
     "              [--json] [--progress]\n"
     "      run a study file (studies/*.yaml: evaluate, sweep, optimize, pareto,\n"

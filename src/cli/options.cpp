@@ -20,7 +20,7 @@ const std::vector<CommandOptions>& option_table() {
       {"stiffness", {"--set", "--out", "--json"}},
       {"wear", {"--set", "--out", "--json", "--samples", "--seed", "--threads"}},
       {"run", {"--set", "--out", "--json", "--threads", "--resume", "--progress"}},
-      {"fe", {"--set", "--out", "--json", "--positions", "--level", "--extended-contact", "--threads"}},
+      {"fe", {"--set", "--out", "--json", "--positions", "--level", "--extended-contact", "--pictures", "--rack-supports", "--threads"}},
   };
   return table;
 }

@@ -130,12 +130,18 @@ TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
 }
 
 // The real solves, at the coarsest level on the smallest shipped drive, two
-// positions: the files are there and whole, K of both codes is positive, the
-// errors are what the numbers in the files say, and nothing is left behind.
+// positions, with the pictures: the files are there and whole, K of both
+// codes is positive, the errors are what the numbers in the files say, and
+// nothing is left behind (no solve folder either).
 TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
   const std::string dir = tmp_dir("real");
-  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --level 0 --threads 2 --json --out " + dir);
+  const std::string work = tmp_dir("real_work");
+  std::filesystem::create_directories(work);
+  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --level 0 --threads 2 --pictures --json --out " +
+                              dir,
+                          false, "TMPDIR=" + work);
   ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(std::filesystem::is_empty(work));
   const auto j = nlohmann::json::parse(r.out);
   std::ifstream in(dir + "/fe.json");
   std::stringstream file;
@@ -165,6 +171,20 @@ TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 2);
   EXPECT_TRUE(std::filesystem::exists(dir + "/fe_stiffness.gp"));
+  // The pictures of the first position: listed, valid PNGs (signature and
+  // IEND chunk), the magnification written in the JSON.
+  EXPECT_EQ(j["pictures"]["travel"].get<double>(), j["positions"][0]["travel"].get<double>());
+  EXPECT_GT(j["pictures"]["displacement_scale"].get<double>(), 1.0);
+  EXPECT_GT(j["pictures"]["largest_displacement"].get<double>(), 0.0);
+  for (const char* key : {"mesh_png", "deformed_png"}) {
+    ASSERT_TRUE(j["files"][key].is_string()) << key;
+    const std::string png = j["files"][key].get<std::string>();
+    std::ifstream f(png, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 20u) << png;
+    EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
+    EXPECT_EQ(bytes.substr(bytes.size() - 8, 4), "IEND") << png;
+  }
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
   }

@@ -54,6 +54,7 @@ TEST(VerifySection, TheWordFeTakesTheDefaults) {
   EXPECT_EQ(s.verify_fe->positions, 4);
   EXPECT_EQ(s.verify_fe->level, 0);
   EXPECT_FALSE(s.verify_fe->extended_contact);
+  EXPECT_FALSE(s.verify_fe->rack_supports);
   EXPECT_EQ(s.verify_fe->mark.line, 3);
 }
 
@@ -63,6 +64,8 @@ TEST(VerifySection, TheMapSetsPositionsLevelAndContact) {
   EXPECT_EQ(s.verify_fe->positions, 8);
   EXPECT_EQ(s.verify_fe->level, 2);
   EXPECT_TRUE(s.verify_fe->extended_contact);
+  EXPECT_FALSE(s.verify_fe->rack_supports);
+  EXPECT_TRUE(load(kHead + "verify: {rack_supports: on}\n").verify_fe->rack_supports);
   // method may be left out; --set reaches the keys.
   const StudySpec o = load(kHead + "verify: {positions: 2}\n", {"verify.level=1"});
   EXPECT_EQ(o.verify_fe->positions, 2);

@@ -79,6 +79,10 @@ void check(const ContactModel& m) {
       if (!std::isfinite(v)) fail("support value is not finite");
     }
   }
+  for (const BodyEquation& e : m.equations) {
+    if (e.body < 0 || e.body >= nb) fail("equation on body " + std::to_string(e.body));
+    check_equations({e.equation}, static_cast<int>(m.bodies[e.body].mesh.nodes.size()), "contact model");
+  }
   for (const ContactSurfaces& c : m.contacts) {
     if (c.slave_body < 0 || c.slave_body >= nb || c.master_body < 0 || c.master_body >= nb) fail("contact on a body not in the model");
     m.bodies[c.slave_body].mesh.node_set(c.slave_set);  // throws naming the set
@@ -87,6 +91,37 @@ void check(const ContactModel& m) {
   for (const auto& [b, set] : m.reaction_sets) {
     if (b < 0 || b >= nb) fail("reaction set on a body not in the model");
     m.bodies[b].mesh.node_set(set);
+  }
+}
+
+// Every node's displacement at the end of the last step (total time = steps),
+// split by body. The displacements of the unit-thickness body need no
+// scaling: the deck's forces were scaled with the slice.
+void read_displacements(const std::vector<DatBlock>& blocks, const ContactModel& m, const std::vector<int>& node_off,
+                        ContactStepResult& last) {
+  const DatBlock* found = nullptr;
+  for (const DatBlock& blk : blocks) {
+    if (blk.quantity == "displacements" && upper(blk.set) == "NALL" && std::abs(blk.time - m.steps) < 1e-6) found = &blk;
+  }
+  if (!found) throw std::runtime_error("job.dat has no displacements at the end of step " + std::to_string(m.steps));
+  last.displacements.resize(m.bodies.size());
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    last.displacements[b].assign(m.bodies[b].mesh.nodes.size(), Point2{});
+    total += m.bodies[b].mesh.nodes.size();
+  }
+  if (found->rows.size() != total) {
+    throw std::runtime_error("job.dat has displacements of " + std::to_string(found->rows.size()) + " nodes, the bodies " +
+                             std::to_string(total));
+  }
+  for (const auto& [node, v] : found->rows) {
+    const int i = node - 1;
+    std::size_t b = m.bodies.size();
+    while (b > 0 && i < node_off[b - 1]) --b;
+    if (b == 0 || i - node_off[b - 1] >= static_cast<int>(m.bodies[b - 1].mesh.nodes.size())) {
+      throw std::runtime_error("job.dat: displacement of node " + std::to_string(node) + " outside every body");
+    }
+    last.displacements[b - 1][static_cast<std::size_t>(i - node_off[b - 1])] = {v[0], v[1]};
   }
 }
 
@@ -126,6 +161,7 @@ std::string ccx_contact_deck(const ContactModel& m, double slice_thickness) {
     o << "*SOLID SECTION, ELSET=E_" << upper(body.name) << ", MATERIAL=M_" << upper(body.name) << "\n"
       << slice_thickness << "\n";
   }
+  for (const BodyEquation& e : m.equations) write_ccx_equations(o, {e.equation}, node_off[e.body]);
   if (!m.contacts.empty()) {
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
       const ContactSurfaces& c = m.contacts[k];
@@ -156,6 +192,7 @@ std::string ccx_contact_deck(const ContactModel& m, double slice_thickness) {
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
       o << "*CONTACT PRINT, SLAVE=C" << k << "S, MASTER=C" << k << "M\nCF\n";
     }
+    if (m.print_displacements && step + 1 == m.steps) o << "*NODE PRINT, NSET=NALL\nU\n";
     o << "*END STEP\n";
   }
   return o.str();
@@ -205,6 +242,7 @@ std::vector<ContactStepResult> solve_contact(const ContactModel& m, const CcxOpt
             r.contact_force.push_back(found ? Point2{found->force[0] / t, found->force[1] / t} : Point2{});
           }
         }
+        if (m.print_displacements) read_displacements(blocks, m, node_off, results.back());
       },
       options);
   return results;

@@ -44,14 +44,24 @@ struct SteppedDisplacement {
   std::vector<double> values;
 };
 
+// A linear constraint between the nodes of one body (plane_stress_model.hpp).
+struct BodyEquation {
+  int body = 0;
+  NodeEquation equation;
+};
+
 struct ContactModel {
   std::vector<ContactBody> bodies;
   std::vector<SteppedDisplacement> supports;
+  std::vector<BodyEquation> equations;  // ties within a body (a hinge's rigid patch)
   std::vector<ContactSurfaces> contacts;
   double penalty_slope = 0;  // Pa/m
   int steps = 1;
   // Node sets (body, set) whose support reactions are read back per node.
   std::vector<std::pair<int, std::string>> reaction_sets;
+  // Also read back every node's displacement at the end of the last step
+  // (for pictures; it makes the .dat file a line per node longer).
+  bool print_displacements = false;
 };
 
 // What one step ended with.
@@ -62,6 +72,9 @@ struct ContactStepResult {
   // whether the pair was in contact at all.
   std::vector<Point2> contact_force;
   std::vector<bool> in_contact;
+  // Per body, per node: the displacement [m]; only in the last step's
+  // result and only when the model asked for it (print_displacements).
+  std::vector<std::vector<Point2>> displacements;
 };
 
 // The deck. Throws std::invalid_argument naming what is wrong (no body, a

@@ -38,6 +38,20 @@ double slice_thickness_for(const Mesh2D& mesh) {
   return 1e-3 * std::max(x1 - x0, y1 - y0);
 }
 
+void write_ccx_equations(std::ostream& out, const std::vector<NodeEquation>& equations, int node_offset) {
+  if (equations.empty()) return;
+  out << "*EQUATION\n";
+  for (const NodeEquation& eq : equations) {
+    out << eq.terms.size() << "\n";
+    // At most four terms (12 entries) per line.
+    for (std::size_t i = 0; i < eq.terms.size(); ++i) {
+      const EquationTerm& t = eq.terms[i];
+      out << t.node + node_offset + 1 << ", " << t.dof << ", " << t.coefficient
+          << (i + 1 == eq.terms.size() || (i + 1) % 4 == 0 ? "\n" : ", ");
+    }
+  }
+}
+
 std::string ccx_deck(const PlaneStressModel& model, double slice_thickness) {
   check_model(model);
   if (!(slice_thickness > 0) || !std::isfinite(slice_thickness)) {
@@ -67,6 +81,9 @@ std::string ccx_deck(const PlaneStressModel& model, double slice_thickness) {
   }
   std::set<int> supported;
   for (const PrescribedDisplacement& s : model.supports) supported.insert(s.node);
+  for (const NodeEquation& eq : model.equations) {
+    for (const EquationTerm& t : eq.terms) supported.insert(t.node);
+  }
   write_set(o, kSupportSet, std::vector<int>(supported.begin(), supported.end()));
   o << "*MATERIAL, NAME=SOLID\n*ELASTIC\n" << model.youngs_modulus << ", " << model.poisson_ratio << "\n";
   o << "*SOLID SECTION, ELSET=EALL, MATERIAL=SOLID\n" << slice_thickness << "\n";
@@ -74,6 +91,7 @@ std::string ccx_deck(const PlaneStressModel& model, double slice_thickness) {
   for (const PrescribedDisplacement& s : model.supports) {
     o << s.node + 1 << ", " << s.dof << ", " << s.dof << ", " << s.value << "\n";
   }
+  write_ccx_equations(o, model.equations);
   o << "*STEP\n*STATIC\n";
   // Forces summed per node and direction: a node loaded twice gets one line.
   std::map<int, std::pair<double, double>> load;

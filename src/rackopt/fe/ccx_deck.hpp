@@ -12,7 +12,9 @@
 // (docs/models/fe_reference.md).
 #pragma once
 
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include "rackopt/fe/plane_stress_model.hpp"
 
@@ -31,11 +33,16 @@ double slice_thickness_for(const Mesh2D& mesh);
 // The deck: nodes (NALL), CPS6 elements (EALL), the model's node sets, the
 // material, *SOLID SECTION with `slice_thickness`, *BOUNDARY for the
 // supports, one linear *STATIC step with *CLOAD = load x slice_thickness,
+// *EQUATION for the model's equations,
 // *NODE PRINT of U for NALL and of RF with totals for kSupportSet (to the
 // .dat file). Nodes and elements are numbered index + 1. Numbers are
 // written with 13 significant digits (CalculiX
 // reads at most 20 characters per number). Calls check_model first (throws
 // std::invalid_argument); also throws when a set uses the reserved name.
 std::string ccx_deck(const PlaneStressModel& model, double slice_thickness);
+
+// Writes `equations` as *EQUATION cards (nothing when empty), nodes
+// numbered index + node_offset + 1.
+void write_ccx_equations(std::ostream& out, const std::vector<NodeEquation>& equations, int node_offset = 0);
 
 }  // namespace rackopt::fe

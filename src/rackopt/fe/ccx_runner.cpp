@@ -5,12 +5,15 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <vector>
 
 #include <unistd.h>
 
 #include "rackopt/core/child_process.hpp"
+#include "rackopt/fe/solve_folders.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -51,6 +54,15 @@ std::string solver_errors(const std::string& log) {
   return out;
 }
 
+// Once per work parent and process, before its first solve: the folders of
+// runs that were killed (solve_folders.hpp).
+void clean_up_once(const fs::path& parent) {
+  static std::mutex mutex;
+  static std::set<std::string> done;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (done.insert(parent.string()).second) remove_abandoned_solve_folders(parent.string());
+}
+
 }  // namespace
 
 std::string find_ccx(const CcxOptions& options) {
@@ -73,18 +85,28 @@ void run_ccx(const std::string& deck, const std::function<void(const std::string
   const std::string exe = find_ccx(options);
   std::error_code ec;
   const fs::path parent = options.work_parent.empty() ? fs::temp_directory_path(ec) : fs::path(options.work_parent);
+  clean_up_once(parent);
   std::string pattern = (parent / "rackopt-ccx-XXXXXX").string();
   if (::mkdtemp(pattern.data()) == nullptr) {
     throw std::runtime_error("cannot make a folder for the CalculiX solve under " + parent.string() + ": " +
                              std::strerror(errno));
   }
   const fs::path dir(pattern);
+  try {
+    mark_solve_folder_owner(dir.string());
+  } catch (...) {
+    fs::remove_all(dir, ec);
+    throw;
+  }
   const fs::path inp = dir / "job.inp", log = dir / "job.log", dat = dir / "job.dat";
   {
     std::ofstream out(inp, std::ios::binary);
     out << deck;
     out.flush();
-    if (!out) throw CcxError("cannot write the CalculiX deck " + inp.string(), inp.string(), "");
+    if (!out) {
+      mark_solve_folder_kept(dir.string(), "the deck could not be written");
+      throw CcxError("cannot write the CalculiX deck " + inp.string(), inp.string(), "");
+    }
   }
   ChildCommand command;
   command.program = exe;
@@ -135,6 +157,7 @@ void run_ccx(const std::string& deck, const std::function<void(const std::string
     }
   }
   if (!failure.empty()) {
+    mark_solve_folder_kept(dir.string(), "CalculiX " + failure);
     throw CcxError("CalculiX " + failure + (errors.empty() ? std::string() : ": " + errors) + " (deck kept: " +
                        inp.string() + ", solver log: " + log.string() + ")",
                    inp.string(), log.string());

@@ -52,7 +52,10 @@ std::string find_ccx(const CcxOptions& options = {});
 // or an exception thrown by `read`: output that does not read or fails a
 // check) it is kept for inspection and CcxError is thrown, with `read`'s
 // message (CcxNotFound before any folder is made). The stop request
-// (Ctrl-C) ends the solve as a failure.
+// (Ctrl-C) ends the solve as a failure. The folder names its owner (this
+// process) and a kept one says so (solve_folders.hpp); the first solve of a
+// process under a work parent first removes the folders there whose owner
+// was killed before it could clean up.
 void run_ccx(const std::string& deck, const std::function<void(const std::string& dat_text)>& read,
              const CcxOptions& options = {});
 

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/fe/rack_span_fe.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -64,6 +65,11 @@ Drive fe_reference_drive(const Drive& drive) {
   return d;
 }
 
+Drive fe_reference_drive(const Drive& drive, const FeOptions& fe) {
+  const Drive d = fe_reference_drive(drive);
+  return fe.rack_on_supports ? rack_on_supports_drive(d, fe) : d;
+}
+
 std::vector<double> fe_positions(const MeshStiffnessModel& model, int positions, double* period_start) {
   if (positions < 1 || positions > kMaxFePositions) {
     throw std::invalid_argument("FE positions " + std::to_string(positions) + " is out of range; allowed: 1.." +
@@ -114,7 +120,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
 
   FeComparison out;
   out.fe = options.fe;
-  const Drive ref = fe_reference_drive(drive);
+  const Drive ref = fe_reference_drive(drive, options.fe);
   const auto t_model = Clock::now();
   const MeshStiffnessModel model(ref);  // DesignError here, before any FE work
   out.summary.analytic_model_seconds = seconds_since(t_model);
@@ -123,7 +129,10 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
   out.slots = static_cast<int>(std::floor(out.contact_ratio)) + 1;
   out.travels = fe_positions(model, options.positions, &out.period_start);
   out.notes = {
-      "rack body rigid in the analytic model (the FE rack segment's base is fixed)",
+      options.fe.rack_on_supports
+          ? "rack on its hinged supports in both codes: the analytic model with the coupled rack-span beam of the FE "
+            "body's section, the FE rack the whole span held at the neutral axis of its end faces"
+          : "rack body rigid in the analytic model (the FE rack segment's base is fixed)",
       "spalls and profile relief left out of both codes (the FE bodies carry neither)",
       "only the theoretical pairs are compared; FE pairs in extended contact are listed apart",
       "pinion compliance = tooth + fillet foundation; rack compliance = tooth; Hertz only in K",
@@ -235,6 +244,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
     row.nodes = fp.nodes;
     row.elements = fp.elements;
     row.fe_mesh_seconds = fp.seconds;
+    row.shape = fp.shape;
     for (const FePair& q : fp.pairs) {
       auto it = std::find_if(row.pairs.begin(), row.pairs.end(), [&](const ComparedPair& c) {
         return c.rack_tooth == q.rack_tooth && c.pinion_tooth == q.pinion_tooth;
@@ -244,6 +254,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
         it->share_fe = q.load_share;
       } else {
         row.extended_pairs.push_back(q);
+        row.extended_share_fe += q.load_share;
       }
     }
     sum.max_k_error = std::max(sum.max_k_error, std::abs(row.k_error));

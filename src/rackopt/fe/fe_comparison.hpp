@@ -7,7 +7,10 @@
 //
 // Conventions (the FE models fix them; docs/fe.md says why):
 //  * The rack body is rigid in the analytic model (effects.rack_span =
-//    kRigid): the FE rack segment's base is fixed. Every other effect stays
+//    kRigid): the FE rack segment's base is fixed. With
+//    FeOptions::rack_on_supports both codes put the rack on its hinges
+//    instead (the coupled rack-span beam of the FE body's section; the FE
+//    rack the whole span, fe/rack_span_fe.hpp). Every other effect stays
 //    as the drive has it. Spalls and profile relief are removed from the
 //    drive for both codes: the FE bodies carry neither (fe_reference_drive).
 //  * Only the theoretical pairs (those MeshStiffnessModel::at has in mesh)
@@ -27,6 +30,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,10 +85,13 @@ struct ComparedPosition {
   double fe_force = 0;            // the FE's mesh force at its second step [N]
   std::vector<ComparedPair> pairs;      // the theoretical pairs, s descending (as MeshState)
   std::vector<FePair> extended_pairs;   // FE pairs off the theoretical ones (extended contact)
+  double extended_share_fe = 0;         // their shares summed: the part of the mesh force they carry
   int nodes = 0, elements = 0;          // of the FE mesh-position model
   double fe_mesh_seconds = 0;     // wall time of the FE mesh-position solve
   double fe_tooth_seconds = 0;    // sum of the single-tooth solves of this position
   double analytic_seconds = 0;    // one MeshStiffnessModel::at (mean of repeated calls)
+  // The FE meshes and displacements when options.fe.keep_shape, else null.
+  std::shared_ptr<const DeformedShape> shape;
 };
 
 struct FeComparisonSummary {
@@ -117,6 +124,12 @@ struct FeComparison {
 // `drive` as both codes see it: rack body rigid, no spalls (effects.spalling
 // off), no profile relief on either member; every other effect as given.
 Drive fe_reference_drive(const Drive& drive);
+
+// The same for FE options `fe`: with fe.rack_on_supports the rack body is
+// the coupled rack-span beam of the FE rack on its hinges instead of rigid
+// (rack_on_supports_drive, fe/rack_span_fe.hpp); otherwise
+// fe_reference_drive(drive).
+Drive fe_reference_drive(const Drive& drive, const FeOptions& fe);
 
 // The N travel positions over one mesh period of `model` (a model of
 // fe_reference_drive): X_i = X_0 + (i + 1/2) p / N, where X_0 is the travel

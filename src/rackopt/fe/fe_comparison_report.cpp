@@ -37,7 +37,7 @@ const ComparedPair* in_slot(const ComparedPosition& row, int slot) {
 
 std::string fe_comparison_csv(const FeComparison& c) {
   std::string out =
-      "travel_m,k_fe_N_per_m,k_analytic_N_per_m,k_error,pairs_in_mesh,extended_pairs_fe,fe_force_N,"
+      "travel_m,k_fe_N_per_m,k_analytic_N_per_m,k_error,pairs_in_mesh,extended_pairs_fe,extended_share_fe,fe_force_N,"
       "fe_mesh_s,fe_tooth_s,analytic_s";
   static const char* kPairCols[] = {"in_mesh",
                                     "rack_tooth",
@@ -58,7 +58,7 @@ std::string fe_comparison_csv(const FeComparison& c) {
   out += '\n';
   for (const ComparedPosition& r : c.rows) {
     out += cell(r.travel) + "," + cell(r.k_fe) + "," + cell(r.k_analytic) + "," + cell(r.k_error) + "," +
-           std::to_string(r.pairs.size()) + "," + std::to_string(r.extended_pairs.size()) + "," + cell(r.fe_force) +
+           std::to_string(r.pairs.size()) + "," + std::to_string(r.extended_pairs.size()) + "," + cell(r.extended_share_fe) + "," + cell(r.fe_force) +
            "," + cell(r.fe_mesh_seconds) + "," + cell(r.fe_tooth_seconds) + "," + cell(r.analytic_seconds);
     for (int q = 0; q < c.slots; ++q) {
       const ComparedPair* p = in_slot(r, q);
@@ -90,6 +90,7 @@ std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const 
   j.key("level").value(c.fe.level);
   j.key("extended_contact").value(c.fe.extended_contact);
   j.key("rack_body_depth").value(c.fe.rack_body_depth);
+  j.key("rack_on_supports").value(c.fe.rack_on_supports);
   j.key("threads").value(static_cast<long>(c.threads));
   j.end_object();
   j.key("conventions").begin_array();
@@ -133,6 +134,7 @@ std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const 
       j.end_object();
     }
     j.end_array();
+    j.key("extended_share_fe").value(r.extended_share_fe);
     j.key("extended_pairs").begin_array();
     for (const FePair& p : r.extended_pairs) {
       j.begin_object();
@@ -175,7 +177,19 @@ std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const 
   path("csv", files.csv);
   path("json", files.json);
   path("plot", files.plot);
+  path("mesh_png", files.mesh_png);
+  path("deformed_png", files.deformed_png);
   j.end_object();
+  j.key("pictures");
+  if (files.pictures.asked) {
+    j.begin_object();
+    j.key("travel").value(files.pictures.travel);
+    j.key("displacement_scale").value(files.pictures.displacement_scale);
+    j.key("largest_displacement").value(files.pictures.largest_displacement);
+    j.end_object();
+  } else {
+    j.null();
+  }
   j.key("warnings").begin_array();
   for (const std::string& w : warnings) j.value(w);
   j.end_array();
@@ -193,7 +207,8 @@ std::string fe_comparison_gnuplot(const FeComparison& c, const std::string& titl
   o << "EOD\n";
   o << "set terminal pngcairo size 1200,700 noenhanced font ',11'\n";
   o << "set output '" << png_name << "'\n";
-  o << "set title '" << title << ": mesh stiffness, analytic (rigid rack body) vs FE, level " << c.fe.level << "'\n";
+  o << "set title '" << title << ": mesh stiffness, analytic (" << (c.fe.rack_on_supports ? "rack on its supports" : "rigid rack body")
+    << ") vs FE, level " << c.fe.level << "'\n";
   o << "set grid\nset key outside right\n";
   o << "set xlabel 'travel of the pitch point [m]'\nset ylabel 'mesh stiffness [MN/m]'\n";
   o << "plot $analytic using 1:($2/1e6) with lines lw 2 title 'analytic', \\\n"
@@ -205,12 +220,16 @@ std::string fe_comparison_summary(const FeComparison& c) {
   std::ostringstream o;
   o << "  FE vs analytic over one mesh period (" << c.rows.size() << " positions from X0 = "
     << fmt("%.6g", c.period_start) << " m, pitch " << fmt("%.4g", c.pitch * 1e3) << " mm; level " << c.fe.level
-    << (c.fe.extended_contact ? ", extended contact" : "") << ", " << c.threads << " thread"
+    << (c.fe.extended_contact ? ", extended contact" : "") << (c.fe.rack_on_supports ? ", rack on its supports" : "")
+    << ", " << c.threads << " thread"
     << (c.threads == 1 ? "" : "s") << "):\n";
   for (const ComparedPosition& r : c.rows) {
     o << "    X = " << fmt("%.6g", r.travel) << " m: K FE " << mnm(r.k_fe) << ", analytic " << mnm(r.k_analytic)
       << " (" << percent(r.k_error) << "), " << r.pairs.size() << " pair" << (r.pairs.size() == 1 ? "" : "s");
-    if (!r.extended_pairs.empty()) o << " + " << r.extended_pairs.size() << " in extended contact";
+    if (!r.extended_pairs.empty()) {
+      o << " + " << r.extended_pairs.size() << " in extended contact carrying " << fmt("%.1f", 100 * r.extended_share_fe)
+        << " % of the force";
+    }
     o << "\n";
   }
   const FeComparisonSummary& s = c.summary;
@@ -228,7 +247,8 @@ std::string fe_comparison_markdown(const FeComparison& c) {
   std::ostringstream o;
   o << c.rows.size() << " positions over one mesh period (X0 = " << fmt("%.6g", c.period_start)
     << " m, pitch " << fmt("%.4g", c.pitch * 1e3) << " mm), FE level " << c.fe.level
-    << (c.fe.extended_contact ? ", extended contact" : "") << ". Conventions:\n\n";
+    << (c.fe.extended_contact ? ", extended contact" : "") << (c.fe.rack_on_supports ? ", rack on its supports" : "")
+    << ". Conventions:\n\n";
   for (const std::string& n : c.notes) o << "- " << n << "\n";
   o << "\n| X [m] | K FE [MN/m] | K analytic [MN/m] | K error | pair (rack/pinion) | share FE | share analytic |"
        " pinion FE [um/kN] | pinion analytic | pinion error | rack FE [um/kN] | rack analytic | rack error |\n";

@@ -18,16 +18,28 @@ namespace rackopt::fe {
 // error is an empty cell.
 std::string fe_comparison_csv(const FeComparison& c);
 
+// What `--pictures` drew: the position and how the deformed picture
+// magnifies the displacements (fe/shape_plot.hpp).
+struct FePictures {
+  bool asked = false;
+  double travel = 0;                // the position drawn [m]
+  double displacement_scale = 0;    // drawn / true displacement
+  double largest_displacement = 0;  // in the picture's window [m]
+};
+
 struct FeFiles {
   std::string csv, json, plot;  // "" = not written (plot: gnuplot missing or failed)
+  std::string mesh_png, deformed_png;  // the pictures; "" = not asked for or not drawn
+  FePictures pictures;
 };
 
 // One JSON object (SI units): ok, problem, name, options {positions, level,
 // extended_contact, rack_body_depth, threads}, conventions (the notes),
 // pitch, period_start, contact_ratio, positions [{travel, k_fe, k_analytic,
 // k_error, fe_force, nodes, elements, times, pairs [...], extended_pairs
-// [...]}], summary {max errors, times, time_ratio}, analytic_curve
-// [[travel, K]...], files, warnings. Errors that are undefined are null.
+// [...], extended_share_fe}], summary {max errors, times, time_ratio},
+// analytic_curve [[travel, K]...], files, pictures (null unless asked),
+// warnings. Errors that are undefined are null.
 std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const FeFiles& files,
                                const std::vector<std::string>& warnings);
 

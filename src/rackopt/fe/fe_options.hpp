@@ -19,6 +19,17 @@ struct FeOptions {
   // drive's rack body height (its section depth below the root line when
   // the section was given explicitly: twice the neutral-axis depth).
   double rack_body_depth = 0;
+  // true: a mesh-position solve hands back its mesh and the nodal
+  // displacements of its last load step (FePosition::shape), for pictures.
+  // The numbers do not depend on it.
+  bool keep_shape = false;
+  // false: the rack segment's base is held (a rigid rack body). true: the
+  // rack is the whole span (rack.span, all its teeth, fine only on the teeth
+  // in mesh and their neighbours) on its two hinges at the neutral axis,
+  // pin-pin or pin-roller as rack.supports says (fe/rack_span_fe.hpp), so
+  // the body bends and stretches as the analytic rack-span model has it.
+  // Mesh positions only; the single-tooth compliances keep their segment.
+  bool rack_on_supports = false;
   // The ccx program, time limit and work folder.
   CcxOptions ccx;
 };

@@ -6,8 +6,10 @@
 #include <stdexcept>
 
 #include "rackopt/fe/ccx_contact_deck.hpp"
+#include "rackopt/fe/deformed_shape.hpp"
 #include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
+#include "rackopt/fe/rack_span_fe.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -18,6 +20,24 @@ namespace {
 // each) up to `outer_size`, so the elements grow geometrically away from it.
 void contact_discs(std::vector<Refinement>& refs, Point2 at, double h_c, double outer_size) {
   for (double size = h_c; size < outer_size; size *= 2) refs.push_back({at, 4 * size, size});
+}
+
+// The rack segment that carries every pair in mesh (a position whose pairs
+// straddle a joint between two spans is not modelled on supports).
+int segment_of(const MeshState& state) {
+  const int seg = state.pairs.front().segment;
+  for (const PairState& p : state.pairs) {
+    if (p.segment != seg) throw std::invalid_argument("rack on its supports: the pairs in mesh lie on two rack spans");
+  }
+  return seg;
+}
+
+// The stiffness that predicts the hub rotation for the drive's load: the
+// analytic model of the same rack body as the FE one (rigid, or on its
+// hinges).
+double stiffness_for_steps(const Drive& drive, const FeOptions& options, double travel, double rigid_stiffness) {
+  if (!options.rack_on_supports) return rigid_stiffness;
+  return MeshStiffnessModel(rack_on_supports_drive(drive, options)).at(travel).stiffness;
 }
 
 }  // namespace
@@ -77,6 +97,9 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
 
   const MeshPlacement pl =
       place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2, far / 2}, depth, options.extended_contact);
+  if (options.rack_on_supports) {  // a position too near a hinge is refused before ccx is looked for
+    (void)rack_span_outline(drive, geo, pl, segment_of(analytic), depth, tuning.hinge_patch_fraction * depth, far / 2);
+  }
   find_ccx(options.ccx);  // CcxNotFound after the design checks, before the meshing
   const Point2 o = pl.pinion_centre;
   // The teeth in contact (and the neighbours that may touch) with their
@@ -96,7 +119,11 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   ContactModel cm;
   cm.bodies.push_back({"P", mesh_polygon_with_holes(pl.pinion.outer, pl.pinion.holes, far, refs),
                        drive.pinion.material.youngs_modulus, drive.pinion.material.poisson_ratio});
-  cm.bodies.push_back({"R", mesh_polygon_with_holes(pl.rack.outer, pl.rack.holes, far, refs),
+  SpanRackMesh span;
+  if (options.rack_on_supports) {
+    span = mesh_span_rack(drive, geo, pl, segment_of(analytic), depth, far, far / 2, refs, tuning.hinge_patch_fraction);
+  }
+  cm.bodies.push_back({"R", options.rack_on_supports ? span.mesh : mesh_polygon_with_holes(pl.rack.outer, pl.rack.holes, far, refs),
                        drive.rack.material.youngs_modulus, drive.rack.material.poisson_ratio});
   const Mesh2D& pinion = cm.bodies[0].mesh;
   const Mesh2D& rack = cm.bodies[1].mesh;
@@ -109,7 +136,10 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   for (const FlankContact& c : pl.contacts) cm.contacts.push_back({0, c.pinion_set, 1, c.rack_set});
   cm.penalty_slope = tuning.penalty_factor * e_star / h_c;
   cm.reaction_sets = {{0, "BORE"}};
+  cm.print_displacements = options.keep_shape;
   const std::vector<int>& bore = pinion.node_set("BORE");
+  if (options.rack_on_supports)
+    for (const NodeEquation& e : span.hinges.equations) cm.equations.push_back({1, e});
   std::vector<double> theta(fr.size()), F(fr.size());
   std::vector<ContactStepResult> r;
   const auto run = [&](double theta_last) {
@@ -125,9 +155,14 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
       cm.supports.push_back(u);
       cm.supports.push_back(v);
     }
-    for (int n : rack.node_set("BASE")) {
-      cm.supports.push_back({1, n, 1, std::vector<double>(fr.size(), 0.0)});
-      cm.supports.push_back({1, n, 2, std::vector<double>(fr.size(), 0.0)});
+    if (options.rack_on_supports) {
+      for (const PrescribedDisplacement& d : span.hinges.supports)
+        cm.supports.push_back({1, d.node, d.dof, std::vector<double>(fr.size(), 0.0)});
+    } else {
+      for (int n : rack.node_set("BASE")) {
+        cm.supports.push_back({1, n, 1, std::vector<double>(fr.size(), 0.0)});
+        cm.supports.push_back({1, n, 2, std::vector<double>(fr.size(), 0.0)});
+      }
     }
     r = solve_contact(cm, options.ccx);
     // Torque of the hub on the pinion about its centre, per unit thickness,
@@ -142,7 +177,8 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
     }
   };
   const double target = drive.load.force / width;  // per unit thickness, as F
-  run(target / (tuning.predicted_stiffness_ratio * analytic.stiffness / width) / rb);
+  run(target / (tuning.predicted_stiffness_ratio *
+                stiffness_for_steps(drive, options, travel, analytic.stiffness) / width) / rb);
   int runs = 1;
   if (std::abs(F.back() / target - 1) > tuning.load_tolerance) {
     // Missed: aim again along the measured secant, F(theta) ~ a + k theta
@@ -187,6 +223,9 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   out.nodes = static_cast<int>(pinion.nodes.size() + rack.nodes.size());
   out.elements = static_cast<int>(pinion.triangles.size() + rack.triangles.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.keep_shape) {
+    out.shape = std::make_shared<const DeformedShape>(make_deformed_shape(cm, r.back(), pl, m, options.level, theta2));
+  }
   return out;
 }
 

@@ -1,15 +1,19 @@
 // The mesh at one travel position by FE: the whole pinion (bore driven by a
-// rigid hub rotation) in contact with a rack segment (base fixed), solved by
+// rigid hub rotation) in contact with a rack segment (base fixed; or, with
+// FeOptions::rack_on_supports, the whole span on its hinges), solved by
 // CalculiX with penalty contact in two load steps; the mesh stiffness is the
 // secant between them, so an initial micro-gap does not enter it.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_options.hpp"
 
 namespace rackopt::fe {
+
+struct DeformedShape;  // fe/deformed_shape.hpp
 
 // One tooth pair that carries load in the FE solution.
 struct FePair {
@@ -32,6 +36,9 @@ struct FePosition {
   int ccx_runs = 1;           // 2 when the first run missed the load by more than the tolerance
   int nodes = 0, elements = 0;
   double seconds = 0;         // wall time of mesh + solve(s)
+  // The meshes and displacements at the last step when options.keep_shape,
+  // else null (fe/deformed_shape.hpp).
+  std::shared_ptr<const DeformedShape> shape;
 };
 
 // FE mesh state at travel X of `drive`: the pairs MeshStiffnessModel::at(X)
@@ -67,6 +74,9 @@ struct MeshPositionTuning {
   // ending at 1; K and the shares are the secant between the first and the
   // last. More steps cost one more ccx step each (the load-window checks).
   std::vector<double> step_fractions = {0.2, 1.0};
+  // FeOptions::rack_on_supports: half height of each hinge patch as a
+  // fraction of the rack body depth (fe/rack_span_fe.hpp).
+  double hinge_patch_fraction = 0.1;
 };
 
 // fe_mesh_position with explicit tuning.

@@ -10,6 +10,19 @@ void fix_node_set(PlaneStressModel& model, const std::string& set, int dof, doub
   for (int node : model.mesh.node_set(set)) model.supports.push_back({node, dof, value});
 }
 
+void check_equations(const std::vector<NodeEquation>& equations, int nodes, const std::string& where) {
+  const auto fail = [&](const std::string& what) { throw std::invalid_argument(where + ": " + what); };
+  for (const NodeEquation& eq : equations) {
+    if (eq.terms.size() < 2) fail("an equation needs at least two terms");
+    if (!(eq.terms.front().coefficient != 0)) fail("an equation's first (dependent) coefficient must not be 0");
+    for (const EquationTerm& t : eq.terms) {
+      if (t.node < 0 || t.node >= nodes) fail("equation on node " + std::to_string(t.node) + ", not in the mesh");
+      if (t.dof != 1 && t.dof != 2) fail("equation dof " + std::to_string(t.dof) + " (allowed: 1 = x, 2 = y)");
+      if (!std::isfinite(t.coefficient)) fail("equation coefficient is not finite");
+    }
+  }
+}
+
 void check_model(const PlaneStressModel& model) {
   const auto fail = [](const std::string& what) { throw std::invalid_argument("plane-stress model: " + what); };
   const int n = static_cast<int>(model.mesh.nodes.size());
@@ -26,6 +39,7 @@ void check_model(const PlaneStressModel& model) {
     if (l.node < 0 || l.node >= n) fail("load on node " + std::to_string(l.node) + ", not in the mesh");
     if (!std::isfinite(l.fx) || !std::isfinite(l.fy)) fail("load is not finite");
   }
+  check_equations(model.equations, n, "plane-stress model");
   for (const auto& [name, set] : model.mesh.node_sets) {
     check_set_name(name);
     for (int i : set) {

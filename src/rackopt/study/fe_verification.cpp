@@ -15,6 +15,7 @@ fe::FeComparisonOptions fe_verification_options(const FeVerifySpec& verify, cons
   o.positions = verify.positions;
   o.fe.level = verify.level;
   o.fe.extended_contact = verify.extended_contact;
+  o.fe.rack_on_supports = verify.rack_supports;
   o.threads = options.threads;
   o.calls = options.fe_calls;
   o.stop = options.stop;

@@ -12,6 +12,7 @@ struct FeVerifySpec {
   int positions = 4;              // travel positions over one mesh period, 1..64
   int level = 0;                  // FE refinement level, 0..6 (0 = module / 6)
   bool extended_contact = false;  // also the neighbouring flanks (reported, not compared)
+  bool rack_supports = false;     // the rack on its hinged supports in both codes (FeOptions::rack_on_supports)
   SourceMark mark;                // where `verify` is written
 };
 

@@ -10,7 +10,7 @@
 namespace rackopt::study {
 namespace {
 
-constexpr const char* kForms = "fe, or a map {method: fe, positions: 4, level: 0, extended_contact: off}";
+constexpr const char* kForms = "fe, or a map {method: fe, positions: 4, level: 0, extended_contact: off, rack_supports: off}";
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -43,7 +43,7 @@ std::optional<FeVerifySpec> read_verify_section(const MarkedMap& top) {
     return v;
   }
   if (!node->is_map()) throw InputError(node->mark, "verify", "expected " + std::string(kForms) + ", found " + node->type_name());
-  const MarkedMap m(node, "verify", top.key_mark("verify"), {"method", "positions", "level", "extended_contact"},
+  const MarkedMap m(node, "verify", top.key_mark("verify"), {"method", "positions", "level", "extended_contact", "rack_supports"},
                     "{method: fe, positions: 4, level: 0}");
   if (const auto method = m.scalar("method", "fe"); method && lower(method->first) != "fe") {
     throw InputError(method->second, "verify.method", "'" + method->first + "' is not allowed; allowed: fe");
@@ -51,6 +51,7 @@ std::optional<FeVerifySpec> read_verify_section(const MarkedMap& top) {
   v.positions = whole_in(m, "positions", v.positions, 1, fe::kMaxFePositions);
   v.level = whole_in(m, "level", v.level, 0, 6);
   v.extended_contact = m.flag("extended_contact", v.extended_contact);
+  v.rack_supports = m.flag("rack_supports", v.rack_supports);
   return v;
 }
 

@@ -1,6 +1,6 @@
 // The study file's `verify` key (docs/studies.md, `verify`):
 //   verify: fe                                   # 4 positions, level 0
-//   verify: {method: fe, positions: 8, level: 1, extended_contact: off}
+//   verify: {method: fe, positions: 8, level: 1, extended_contact: off, rack_supports: off}
 #pragma once
 
 #include <optional>
