@@ -34,10 +34,12 @@ int segment_of(const MeshState& state) {
 
 // The stiffness that predicts the hub rotation for the drive's load: the
 // analytic model of the same rack body as the FE one (rigid, or on its
-// hinges).
-double stiffness_for_steps(const Drive& drive, const FeOptions& options, double travel, double rigid_stiffness) {
-  if (!options.rack_on_supports) return rigid_stiffness;
-  return MeshStiffnessModel(rack_on_supports_drive(drive, options)).at(travel).stiffness;
+// hinges) times the calibrated FE/analytic ratio of that model.
+double predicted_fe_stiffness(const Drive& drive, const FeOptions& options, const MeshPositionTuning& tuning,
+                              double travel, double rigid_stiffness) {
+  if (!options.rack_on_supports) return tuning.predicted_stiffness_ratio * rigid_stiffness;
+  return tuning.predicted_stiffness_ratio_on_supports *
+         MeshStiffnessModel(rack_on_supports_drive(drive, options)).at(travel).stiffness;
 }
 
 }  // namespace
@@ -51,7 +53,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   check_fe_options(options);
   if (!std::isfinite(travel)) throw std::invalid_argument("fe_mesh_position: the travel must be finite");
   if (!(tuning.penalty_factor > 0)) throw std::invalid_argument("fe_mesh_position: the penalty factor must be positive");
-  if (!(tuning.predicted_stiffness_ratio > 0)) {
+  if (!(tuning.predicted_stiffness_ratio > 0) || !(tuning.predicted_stiffness_ratio_on_supports > 0)) {
     throw std::invalid_argument("fe_mesh_position: the predicted stiffness ratio must be positive");
   }
   if (!(tuning.load_tolerance > 0)) throw std::invalid_argument("fe_mesh_position: the load tolerance must be positive");
@@ -177,8 +179,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
     }
   };
   const double target = drive.load.force / width;  // per unit thickness, as F
-  run(target / (tuning.predicted_stiffness_ratio *
-                stiffness_for_steps(drive, options, travel, analytic.stiffness) / width) / rb);
+  run(target / (predicted_fe_stiffness(drive, options, tuning, travel, analytic.stiffness) / width) / rb);
   int runs = 1;
   if (std::abs(F.back() / target - 1) > tuning.load_tolerance) {
     // Missed: aim again along the measured secant, F(theta) ~ a + k theta
