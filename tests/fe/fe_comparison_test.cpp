@@ -10,6 +10,7 @@
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <thread>
 
 #include "rackopt/core/error.hpp"
@@ -343,9 +344,29 @@ TEST(FeComparison, ExtendedContactPairsAreListedApartAndNotCompared) {
   for (const ComparedPosition& r : c.rows) {
     ASSERT_EQ(r.extended_pairs.size(), 1u);
     EXPECT_EQ(r.extended_pairs[0].rack_tooth, 99);
+    EXPECT_DOUBLE_EQ(r.extended_share_fe, 0.01);
     for (const ComparedPair& p : r.pairs) EXPECT_NE(p.rack_tooth, 99);
   }
-  EXPECT_NE(fe_comparison_json(gantry(), c, {}, {}).find("\"extended_pairs\":[{\"rack_tooth\":99"), std::string::npos);
+  const std::string json = fe_comparison_json(gantry(), c, {}, {});
+  EXPECT_NE(json.find("\"extended_share_fe\":0.01,\"extended_pairs\":[{\"rack_tooth\":99"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"pictures\":null"), std::string::npos);
+  // fe.csv: the extended pairs counted and their share summed, beside pairs_in_mesh.
+  std::istringstream csv(fe_comparison_csv(c));
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_NE(header.find(",pairs_in_mesh,extended_pairs_fe,extended_share_fe,"), std::string::npos) << header;
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, ',')) out.push_back(cell);
+    return out;
+  };
+  const std::vector<std::string> h = cells(header), v = cells(row);
+  const auto col = [&](const char* name) { return v.at(static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin())); };
+  EXPECT_EQ(col("extended_pairs_fe"), "1");
+  EXPECT_EQ(col("extended_share_fe"), "0.01");
 }
 
 TEST(FeComparison, FilesHaveOneRowPerPositionAndCompleteJson) {
