@@ -156,7 +156,8 @@ void check_extended_contact(const FePosition& a, const FePosition& b) {
   // r_b - d: the torque at the bore counts it d / r_b short, and the shares,
   // forces over F = T / r_b, sum to 1 + share x d / r_b.
   const Drive d = loaded_small_drive();
-  const MeshGeometry& geo = MeshStiffnessModel(fe_reference_drive(d)).geometry();
+  const MeshStiffnessModel model(fe_reference_drive(d));
+  const MeshGeometry& geo = model.geometry();
   const double rb = geo.pinion.base_radius, s_end = geo.path.s_end;
   double excess = 0;
   for (const FePair& q : b.pairs) {
