@@ -308,7 +308,11 @@ void compare_table(const std::vector<std::string>& problems, int positions, int 
         sf += b;
         std::snprintf(b, sizeof b, "%s%.3f", sep, q.share_analytic);
         sa += b;
-        std::snprintf(b, sizeof b, "%s%+.3f", sep, q.pinion_error);
+        if (q.pinion_compared) {
+          std::snprintf(b, sizeof b, "%s%+.3f", sep, q.pinion_error);
+        } else {
+          std::snprintf(b, sizeof b, "%sn/a", sep);  // contact off the pinion's involute
+        }
         pe += b;
         std::snprintf(b, sizeof b, "%s%+.3f", sep, q.rack_error);
         re += b;

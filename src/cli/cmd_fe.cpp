@@ -11,6 +11,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
+#include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/fe/shape_plot.hpp"
@@ -70,6 +71,7 @@ int cmd_fe(const Args& a) {
   // or a missing solver leaves nothing behind.
   std::vector<std::string> warnings = MeshStiffnessModel(fe::fe_reference_drive(drive)).warnings();
   (void)fe::find_ccx(opt.fe.ccx);
+  (void)fe::gmsh_api();
 
   namespace fs = std::filesystem;
   const fs::path dir = a.out_dir.empty() ? fs::path("out") / (fs::path(a.file).stem().string() + "_fe")

@@ -17,6 +17,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
+#include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/report/study_report.hpp"
@@ -133,7 +134,10 @@ int cmd_run(const Args& a) {
   const std::string out_dir =
       a.out_dir.empty() ? (fs::path("out") / folder_name(spec.name)).string() : a.out_dir;
 
-  if (spec.verify_fe) (void)fe::find_ccx();  // `verify: fe` without ccx: refused before the study runs
+  if (spec.verify_fe) {  // `verify: fe` without ccx or Gmsh: refused before the study runs
+    (void)fe::find_ccx();
+    (void)fe::gmsh_api();
+  }
   const FolderLock lock(out_dir);  // held until the report is written
   report_stale_temporaries(lock);
 

@@ -23,6 +23,7 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
+#include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/record/evaluation_store.hpp"
@@ -173,6 +174,8 @@ int main(int argc, char** argv) {
     return fail(kBadInput, "output_folder", e.what());
   } catch (const rackopt::fe::CcxNotFound& e) {
     return fail(kRunFailed, "ccx_not_found", e.what());
+  } catch (const rackopt::fe::GmshNotFound& e) {
+    return fail(kRunFailed, "gmsh_not_found", e.what());
   } catch (const rackopt::fe::CcxError& e) {
     std::string msg = std::string("FE solve failed: ") + e.what();
     if (!e.deck().empty() && msg.find(e.deck()) == std::string::npos) msg += " (input deck kept: " + e.deck() + ")";

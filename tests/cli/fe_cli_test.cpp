@@ -96,6 +96,22 @@ TEST(FeCli, AMissingCcxIsExitOneNamingThePackageAndLeavesNoFiles) {
   EXPECT_FALSE(std::filesystem::exists(dir));
 }
 
+TEST(FeCli, AMissingGmshIsExitOneNamingThePackageAndLeavesNoFiles) {
+  const std::string dir = tmp_dir("no_gmsh");
+  const CliResult j = run("fe problems/gantry_axis.yaml --json --out " + dir, false,
+                          "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so");
+  EXPECT_EQ(j.code, 1) << j.out;
+  const auto o = nlohmann::json::parse(j.out);
+  EXPECT_EQ(o["error"], "gmsh_not_found");
+  EXPECT_NE(o["message"].get<std::string>().find("libgmsh-dev"), std::string::npos) << o["message"];
+  EXPECT_NE(o["message"].get<std::string>().find("/nonexistent/libgmsh.so"), std::string::npos) << o["message"];
+  EXPECT_FALSE(std::filesystem::exists(dir));
+  // Commands that do not mesh never open Gmsh, so they do not miss it.
+  const CliResult s = run("stiffness problems/gantry_axis.yaml --json --out " + dir + "_stiffness", false,
+                          "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so");
+  EXPECT_EQ(s.code, 0) << s.out;
+}
+
 TEST(FeCli, AnImpossibleDesignIsReportedAsTheOtherCommandsDoBeforeAnyFeWork) {
   const std::string dir = tmp_dir("design");
   // Even with no solver: the design is refused first.

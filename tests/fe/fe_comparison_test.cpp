@@ -17,6 +17,8 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
+#include "rackopt/fe/tooth_compliance_fe.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/output/file_check.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
@@ -367,6 +369,60 @@ TEST(FeComparison, ExtendedContactPairsAreListedApartAndNotCompared) {
   const auto col = [&](const char* name) { return v.at(static_cast<std::size_t>(std::find(h.begin(), h.end(), name) - h.begin())); };
   EXPECT_EQ(col("extended_pairs_fe"), "1");
   EXPECT_EQ(col("extended_share_fe"), "0.01");
+}
+
+// The paper's rack railway keeps the geometric path of contact, which starts
+// below the pinion's base-circle tangent point, and its pinion is undercut:
+// pairs there (s <= 0 or below the form circle) have no involute to load, so their pinion solve is left out and said so; the mesh
+// solve and the rack tooth are still compared.
+TEST(FeComparison, PinionContactsOffTheInvoluteAreNotComparedAndSaidSo) {
+  const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway_paper.yaml");
+  Fake f;
+  FeCalls calls = f.calls();
+  const auto tooth = calls.tooth_compliance;
+  std::mutex m;
+  int pinion_calls = 0;
+  calls.tooth_compliance = [&](const Drive& dr, ToothMember member, double s, const FeOptions& o) {
+    if (member == ToothMember::kPinion) {
+      EXPECT_TRUE(pinion_contact_on_involute(build_mesh_geometry(dr), s)) << "a pinion solve off the involute";
+      const std::lock_guard<std::mutex> lock(m);
+      ++pinion_calls;
+    }
+    return tooth(dr, member, s, o);
+  };
+  FeComparisonOptions opt;
+  opt.positions = 8;
+  opt.calls = calls;
+  const FeComparison c = compare_with_fe(d, opt);
+  const MeshGeometry g = build_mesh_geometry(fe_reference_drive(d));
+  int off = 0, pairs = 0;
+  for (const ComparedPosition& r : c.rows) {
+    for (const ComparedPair& p : r.pairs) {
+      ++pairs;
+      // On the involute: beyond the base circle's tangent point and at or above the form circle.
+      const bool involute = p.s > 0 && g.pinion_contact_radius(p.s) >= g.pinion.form_radius;
+      EXPECT_EQ(p.pinion_compared, involute) << "s = " << p.s;
+      EXPECT_GT(p.rack_fe, 0);
+      if (p.pinion_compared) {
+        EXPECT_GT(p.pinion_fe, 0);
+        continue;
+      }
+      ++off;
+      EXPECT_EQ(p.pinion_fe, 0);
+      EXPECT_EQ(p.pinion_error, 0);
+      EXPECT_GT(p.pinion_analytic, 0);
+    }
+  }
+  ASSERT_GT(off, 0) << "no pair below the base circle: the test no longer sees the case";
+  EXPECT_EQ(pinion_calls, pairs - off);
+  EXPECT_TRUE(std::any_of(c.notes.begin(), c.notes.end(),
+                          [](const std::string& n) { return n.find("off the involute") != std::string::npos; }));
+  const std::string json = fe_comparison_json(d, c, FeFiles{}, {});
+  EXPECT_EQ(check_json_complete(json), "");
+  EXPECT_NE(json.find("\"pinion_fe\":null"), std::string::npos);
+  EXPECT_NE(json.find("\"pinion_compared\":false"), std::string::npos);
+  EXPECT_NE(fe_comparison_markdown(c).find("off involute"), std::string::npos);
+  EXPECT_NE(fe_comparison_csv(c).find(",,"), std::string::npos);
 }
 
 TEST(FeComparison, FilesHaveOneRowPerPositionAndCompleteJson) {

@@ -3,14 +3,37 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
 #include <future>
 #include <set>
 
 #include "rackopt/fe/edge_loads.hpp"
+#include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/fe/gmsh_mesher.hpp"
 
 namespace rackopt::fe {
 namespace {
+
+bool gmsh_mapped() {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line)) {
+    if (line.find("libgmsh") != std::string::npos) return true;
+  }
+  return false;
+}
+
+// Gmsh is opened at the first mesh, not at program start: a program that
+// never meshes never pays for loading it (gmsh_library.hpp).
+TEST(GmshMesher, TheLibraryIsOpenedAtTheFirstMeshOnly) {
+  if (gmsh_loaded()) GTEST_SKIP() << "another test of this process meshed first (ctest runs each test alone)";
+  EXPECT_FALSE(gmsh_mapped());
+  (void)mesh_rectangle(0, 0, 1, 1, 0.5);
+  EXPECT_TRUE(gmsh_loaded());
+  EXPECT_TRUE(gmsh_mapped());
+  EXPECT_NE(gmsh_library_name().find("libgmsh.so"), std::string::npos);
+}
 
 TEST(GmshMesher, RectangleAreaSetsAndQuadraticTriangles) {
   const double L = 0.03, H = 0.01;

@@ -117,5 +117,25 @@ TEST(FeToothCompliance, ContactsOffThePathAndBadOptionsAreErrors) {
   EXPECT_THROW(fe_tooth_compliance(no_load, ToothMember::kRack, g.path.s_pitch), std::invalid_argument);
 }
 
+// A path kept as the paper's geometric one starts below the pinion's base
+// circle: the rack tooth there is still loaded (its flank is straight), the
+// pinion, with no involute to load, is refused before any FE work.
+TEST(FeToothCompliance, BelowTheBaseCircleTheRackIsSolvedAndThePinionRefused) {
+  const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway_paper.yaml");
+  const MeshGeometry g = build_mesh_geometry(d);
+  ASSERT_LT(g.path.s_start, 0);
+  const double s = 0.5 * g.path.s_start;
+  EXPECT_FALSE(pinion_contact_on_involute(g, s));
+  EXPECT_TRUE(pinion_contact_on_involute(g, g.path.s_end));
+  EXPECT_THROW(fe_tooth_compliance(d, ToothMember::kPinion, s), std::invalid_argument);
+  const ToothComplianceFe r = fe_tooth_compliance(d, ToothMember::kRack, s);
+  print("rack below the base circle", r);
+  EXPECT_TRUE(std::isfinite(r.compliance));
+  EXPECT_GT(r.compliance, 0);
+  // The patch is sized with the floor radius m / 10, not the (negative) s.
+  EXPECT_EQ(patch_curvature_radius(s, d.pinion.module), 0.1 * d.pinion.module);
+  EXPECT_GT(r.hertz_half_width, 0);
+}
+
 }  // namespace
 }  // namespace rackopt::fe

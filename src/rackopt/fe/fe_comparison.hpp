@@ -74,6 +74,10 @@ struct ComparedPair {
   double s = 0;                  // LOA coordinate of the contact [m]
   bool carried_in_fe = false;    // the FE solution has this pair carrying load
   double share_fe = 0, share_analytic = 0, share_error = 0;     // error = analytic - FE
+  // false when the pinion's contact lies off its involute (s <= 0 or below
+  // the form circle: a path kept longer than the involute allows): no FE
+  // single-tooth solve can load it, and pinion_fe / pinion_error stay 0.
+  bool pinion_compared = true;
   double pinion_fe = 0, pinion_analytic = 0, pinion_error = 0;  // error = (analytic - FE) / FE
   double rack_fe = 0, rack_analytic = 0, rack_error = 0;
   double pinion_seconds = 0, rack_seconds = 0;  // wall time of each FE single-tooth solve
@@ -82,7 +86,7 @@ struct ComparedPair {
 struct ComparedPosition {
   double travel = 0;              // X [m]
   double k_fe = 0, k_analytic = 0, k_error = 0;  // N/m; error = (analytic - FE) / FE
-  double fe_force = 0;            // the FE's mesh force at its second step [N]
+  double fe_force = 0;            // the FE's mesh force at its last step [N]
   std::vector<ComparedPair> pairs;      // the theoretical pairs, s descending (as MeshState)
   std::vector<FePair> extended_pairs;   // FE pairs off the theoretical ones (extended contact)
   double extended_share_fe = 0;         // their shares summed: the part of the mesh force they carry

@@ -68,10 +68,12 @@ std::string fe_comparison_csv(const FeComparison& c) {
         continue;
       }
       out += ",1," + std::to_string(p->rack_tooth) + "," + std::to_string(p->pinion_tooth);
-      for (double v : {p->s, p->share_fe, p->share_analytic, p->share_error, p->pinion_fe, p->pinion_analytic,
-                       p->pinion_error, p->rack_fe, p->rack_analytic, p->rack_error}) {
-        out += "," + cell(v);
-      }
+      for (double v : {p->s, p->share_fe, p->share_analytic, p->share_error}) out += "," + cell(v);
+      // Empty cells where the pinion's contact is off its involute (not compared).
+      out += p->pinion_compared ? "," + cell(p->pinion_fe) : std::string(",");
+      out += "," + cell(p->pinion_analytic);
+      out += p->pinion_compared ? "," + cell(p->pinion_error) : std::string(",");
+      for (double v : {p->rack_fe, p->rack_analytic, p->rack_error}) out += "," + cell(v);
     }
     out += '\n';
   }
@@ -123,9 +125,18 @@ std::string fe_comparison_json(const Drive& drive, const FeComparison& c, const 
       j.key("share_fe").value(p.share_fe);
       j.key("share_analytic").value(p.share_analytic);
       j.key("share_difference").value(p.share_error);
-      j.key("pinion_fe").value(p.pinion_fe);
+      j.key("pinion_compared").value(p.pinion_compared);
+      if (p.pinion_compared) {
+        j.key("pinion_fe").value(p.pinion_fe);
+      } else {
+        j.key("pinion_fe").null();
+      }
       j.key("pinion_analytic").value(p.pinion_analytic);
-      j.key("pinion_error").value(p.pinion_error);
+      if (p.pinion_compared) {
+        j.key("pinion_error").value(p.pinion_error);
+      } else {
+        j.key("pinion_error").null();
+      }
       j.key("rack_fe").value(p.rack_fe);
       j.key("rack_analytic").value(p.rack_analytic);
       j.key("rack_error").value(p.rack_error);
@@ -264,8 +275,8 @@ std::string fe_comparison_markdown(const FeComparison& c) {
       }
       first = false;
       o << p.rack_tooth << "/" << p.pinion_tooth << " | " << fmt("%.3f", p.share_fe) << " | "
-        << fmt("%.3f", p.share_analytic) << " | " << umkn(p.pinion_fe) << " | " << umkn(p.pinion_analytic) << " | "
-        << percent(p.pinion_error) << " | " << umkn(p.rack_fe) << " | " << umkn(p.rack_analytic) << " | "
+        << fmt("%.3f", p.share_analytic) << " | " << (p.pinion_compared ? umkn(p.pinion_fe) : "off involute")
+        << " | " << umkn(p.pinion_analytic) << " | " << (p.pinion_compared ? percent(p.pinion_error) : "—") << " | " << umkn(p.rack_fe) << " | " << umkn(p.rack_analytic) << " | "
         << percent(p.rack_error) << " |\n";
     }
     if (first) {

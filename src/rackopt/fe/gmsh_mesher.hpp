@@ -1,7 +1,8 @@
-// Meshing a plane polygon into 6-node triangles with Gmsh (its C++ API,
-// Debian libgmsh-dev). Only this file's .cpp includes gmsh.h.
+// Meshing a plane polygon into 6-node triangles with Gmsh (its C API,
+// Debian libgmsh-dev, opened at the first call: gmsh_library.hpp). Only this
+// file's .cpp calls Gmsh.
 //
-// Gmsh keeps one global session (gmsh::initialize ... gmsh::finalize) that is
+// Gmsh keeps one global session (gmshInitialize ... gmshFinalize) that is
 // not thread-safe: every call here takes one process-wide mutex and runs a
 // whole session inside it (initialize, build, mesh, read back, finalize), so
 // calls from several threads are serialized and never see each other's model.
@@ -39,7 +40,8 @@ struct Refinement {
 // finer where `refinements` ask. Mid-side nodes lie on the straight edges.
 // Triangles come out counter-clockwise. Throws std::invalid_argument for
 // fewer than 3 vertices, a non-positive size or a bad set name, and
-// std::runtime_error with Gmsh's message when Gmsh fails.
+// std::runtime_error with Gmsh's message when Gmsh fails, GmshNotFound
+// (gmsh_library.hpp) when the Gmsh library cannot be opened.
 Mesh2D mesh_polygon(const Polygon2D& polygon, double target_size,
                     const std::vector<Refinement>& refinements = {});
 

@@ -9,7 +9,9 @@
 #include "rackopt/fe/deformed_shape.hpp"
 #include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
+#include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/fe/rack_span_fe.hpp"
+#include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -91,7 +93,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   double b_hertz = INFINITY;
   for (const PairState& p : analytic.pairs) {
     const double per_width = drive.load.force * std::max(p.load_share, 0.1) / width;
-    const double R = std::max(p.s, 0.1 * m);  // a contact at the base circle: no curvature to speak of
+    const double R = patch_curvature_radius(p.s, m);
     b_hertz = std::min(b_hertz, std::sqrt(4 * per_width * R / (M_PI * e_star)));
   }
   const double h_c = std::clamp(0.5 * b_hertz / std::pow(2.0, options.level), h / 64, h);
@@ -103,6 +105,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
     (void)rack_span_outline(drive, geo, pl, segment_of(analytic), depth, tuning.hinge_patch_fraction * depth, far / 2);
   }
   find_ccx(options.ccx);  // CcxNotFound after the design checks, before the meshing
+  (void)gmsh_api();       // GmshNotFound likewise
   const Point2 o = pl.pinion_centre;
   // The teeth in contact (and the neighbours that may touch) with their
   // fillets and roots at the level's size (gear_bodies' focus discs,

@@ -50,16 +50,13 @@ double rack_face_width(const Drive& drive) {
 void check_contact(const MeshGeometry& g, ToothMember member, double s) {
   const ContactPath& path = g.path;
   const double tol = 1e-9 * path.base_pitch;
-  if (!std::isfinite(s) || s < path.s_start - tol || s > path.s_end + tol || !(s > 0)) {
+  if (!std::isfinite(s) || s < path.s_start - tol || s > path.s_end + tol) {
     throw std::invalid_argument("FE tooth compliance: s = " + mm(s) + " is outside the path of contact " + mm(path.s_start) +
-                                " .. " + mm(path.s_end) + " (and must be > 0)");
+                                " .. " + mm(path.s_end));
   }
-  if (member == ToothMember::kPinion) {
-    const double radius = g.pinion_contact_radius(s);
-    if (radius < g.pinion.form_radius * (1 - 1e-12)) {
-      throw std::invalid_argument("FE tooth compliance: s = " + mm(s) + " puts the pinion contact at radius " + mm(radius) +
-                                  ", below the form circle " + mm(g.pinion.form_radius) + ": not on the involute");
-    }
+  if (member == ToothMember::kPinion && !pinion_contact_on_involute(g, s)) {
+    throw std::invalid_argument("FE tooth compliance: s = " + mm(s) + " puts the pinion contact off its involute (s <= 0 "
+                                "or below the form circle " + mm(g.pinion.form_radius) + "): nothing to load there");
   }
 }
 
@@ -79,6 +76,12 @@ std::vector<Refinement> patch_discs(Point2 centre, double half_width, double lev
 }
 
 }  // namespace
+
+bool pinion_contact_on_involute(const MeshGeometry& g, double s) {
+  return s > 0 && g.pinion_contact_radius(s) >= g.pinion.form_radius * (1 - 1e-12);
+}
+
+double patch_curvature_radius(double s, double module) { return std::max(s, 0.1 * module); }
 
 double analytic_tooth_compliance(const Drive& drive, ToothMember member, double s) {
   const MeshGeometry g = build_mesh_geometry(drive);
@@ -142,7 +145,7 @@ ToothComplianceFe fe_tooth_compliance(const Drive& drive, ToothMember member, do
       }
     }
     force_per_width = force / pinion.face_width;
-    out.hertz_half_width = hertz_half_width(force_per_width, s, e_star);
+    out.hertz_half_width = hertz_half_width(force_per_width, patch_curvature_radius(s, drive.pinion.module), e_star);
     out.read_point = crossing(out.load_point, direction, 0.0);
     MeshGrading grading;
     const int z = pinion.teeth;
@@ -172,7 +175,7 @@ ToothComplianceFe fe_tooth_compliance(const Drive& drive, ToothMember member, do
     out.load_point = {xc - r.half_thickness_at_root + (y + r.dedendum) * std::tan(a0), y};
     direction = {std::cos(a0), -std::sin(a0)};  // the mesh force on the rack (core/drive.hpp)
     force_per_width = force / rack_face_width(drive);
-    out.hertz_half_width = hertz_half_width(force_per_width, s, e_star);
+    out.hertz_half_width = hertz_half_width(force_per_width, patch_curvature_radius(s, drive.pinion.module), e_star);
     out.read_point = crossing(out.load_point, direction, xc);
     MeshGrading grading;
     // The loaded tooth alone: its neighbours fine too move the compliance by 1e-4.

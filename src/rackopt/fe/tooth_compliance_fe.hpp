@@ -9,6 +9,7 @@
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_options.hpp"
 #include "rackopt/fe/mesh2d.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
 
 namespace rackopt::fe {
 
@@ -48,16 +49,29 @@ struct ToothComplianceFe {
 //   MeshGeometry::contact_height_above_datum(s); the read point is where the
 //   load line crosses that tooth's centre line.
 //   Both: the force per unit thickness F' = F / (the member's face width)
-//   spread as a Hertz pressure over b_H = sqrt(4 F' s / (pi E*)) (the
-//   involute's curvature radius at s against the flat rack flank), with
+//   spread as a Hertz pressure over b_H = sqrt(4 F' R / (pi E*)), R the
+//   involute's curvature radius s against the flat rack flank
+//   (patch_curvature_radius: at least m / 10), with
 //   mesh discs of b_H / 3 there; compliance = (displacement at the read
 //   point . load direction) / F.
 // Throws DesignError (from the geometry or the body outlines) before any FE
 // work, CcxNotFound / CcxError from the solve, std::invalid_argument for bad
 // options, a non-positive load, a pinion without a bore, an s outside the
-// path (or, for the pinion, below its form circle or s <= 0).
+// path (or, for the pinion, off its involute: pinion_contact_on_involute).
 ToothComplianceFe fe_tooth_compliance(const Drive& drive, ToothMember member, double s,
                                       const FeOptions& options = {});
+
+// Whether the pinion's contact at LOA coordinate s lies on its involute
+// (s > 0 and at or above the form circle), i.e. whether a pinion
+// single-tooth solve can load it. A path of contact kept as the paper's
+// geometric one (interference limit off) can start below the base circle's
+// tangent point, where the pinion has no involute.
+bool pinion_contact_on_involute(const MeshGeometry& geometry, double s);
+
+// The radius of curvature the Hertz patch is sized with at LOA coordinate
+// s: the involute's s, but no less than m / 10 (at and below the base
+// circle the involute has no curvature to speak of).
+double patch_curvature_radius(double s, double module);
 
 // The analytic model's compliance of `member` at s under the same
 // definition (m/N, whole face width): pinion = tooth bending + shear + axial

@@ -1,0 +1,25 @@
+# Read by ctest after the discovered tests (CMakeLists.txt, TEST_INCLUDE_FILES):
+# the long FE and study tests start first, so that with -j N they overlap
+# the many short ones instead of running alone at the end. ctest learns the
+# costs of a build folder after its first run; a fresh checkout (CI) has none.
+# Seconds measured on a quiet core (docs/performance.md, "CI").
+cmake_policy(PUSH)
+cmake_policy(SET CMP0064 NEW)  # if(TEST name)
+set(_rackopt_long_tests
+  "RackOnSupportsFe.MeshPositionOnTheSupportsAtMidSpan" 100
+  "FeCli.RealSolvesOnTheGantryDriveAtLevelZero" 90
+  "FeShapeAndExtendedContact.ShapeOfTheLoadedMeshAndANeighbourInExtendedContact" 45
+  "MeshPositionFe.SmallDriveInvariantsAndTheAnalyticModel" 44
+  "MeshPositionFe.AMissedLoadIsCorrectedByASecondRun" 22
+  "StudyAcceptance.RailwaySizingBeatsADenseGridAndRepeatsBitForBit" 17)
+list(LENGTH _rackopt_long_tests _n)
+math(EXPR _last "${_n} - 1")
+foreach(_i RANGE 0 ${_last} 2)
+  math(EXPR _j "${_i} + 1")
+  list(GET _rackopt_long_tests ${_i} _name)
+  list(GET _rackopt_long_tests ${_j} _cost)
+  if(TEST "${_name}")
+    set_tests_properties("${_name}" PROPERTIES COST ${_cost})
+  endif()
+endforeach()
+cmake_policy(POP)
