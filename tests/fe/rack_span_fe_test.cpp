@@ -123,8 +123,8 @@ double share_sum(const FePosition& p) {
   return s;
 }
 
-// One position at mid-span (two ccx contact solves, the longest part of the
-// suite here); the same checks near a hinge and on shipped problems are in
+// One position at mid-span (a ccx contact solve of the whole span, the
+// longest test of the suite); the same checks near a hinge and on shipped problems are in
 // rack_supports_table_test.cpp (a command, docs/models/fe_reference.md).
 TEST(RackOnSupportsFe, MeshPositionOnTheSupportsAtMidSpan) {
   const Drive d = small_span_drive();
@@ -133,15 +133,17 @@ TEST(RackOnSupportsFe, MeshPositionOnTheSupportsAtMidSpan) {
   on.rack_on_supports = true;
   const MeshStiffnessModel coupled(rack_on_supports_drive(d, on));
   const double X = 0.5 * d.rack.span + 0.31 * pitch;
-  const FePosition held = fe_mesh_position(d, X);
   const FePosition p = fe_mesh_position(d, X, on);
   const MeshState an = coupled.at(X);
+  // The rack segment held at its base, by the analytic model (FE with a held
+  // base is 0.54-0.64 of it, docs/accuracy.md): one contact solve less.
+  const double held = MeshStiffnessModel(fe_reference_drive(d)).at(X).stiffness;
   std::printf("  X = %.4f m (a = %.4f m): K FE on supports %.4e N/m, analytic coupled %.4e (FE/analytic %.3f); FE base "
-              "held %.4e; %d elements, %.1f s\n",
-              X, an.pairs.front().a, p.stiffness, an.stiffness, p.stiffness / an.stiffness, held.stiffness, p.elements,
+              "held (analytic) %.4e; %d elements, %.1f s\n",
+              X, an.pairs.front().a, p.stiffness, an.stiffness, p.stiffness / an.stiffness, held, p.elements,
               p.seconds);
   EXPECT_GT(p.stiffness, 0);
-  EXPECT_LT(p.stiffness, 0.5 * held.stiffness);  // the 12 mm body on 0.2 m bends far more than the teeth
+  EXPECT_LT(p.stiffness, 0.3 * held);  // the 12 mm body on 0.2 m bends far more than the teeth
   ASSERT_EQ(p.pairs.size(), an.pairs.size());
   // Each pair's share from its own contact force against the hub torque:
   // within ccx's residual tolerance (0.5 % of the mean force by default).

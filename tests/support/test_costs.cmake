@@ -3,8 +3,6 @@
 # the many short ones instead of running alone at the end. ctest learns the
 # costs of a build folder after its first run; a fresh checkout (CI) has none.
 # Seconds measured on a quiet core (docs/performance.md, "CI").
-cmake_policy(PUSH)
-cmake_policy(SET CMP0064 NEW)  # if(TEST name)
 set(_rackopt_long_tests
   "RackOnSupportsFe.MeshPositionOnTheSupportsAtMidSpan" 100
   "FeCli.RealSolvesOnTheGantryDriveAtLevelZero" 90
@@ -18,8 +16,5 @@ foreach(_i RANGE 0 ${_last} 2)
   math(EXPR _j "${_i} + 1")
   list(GET _rackopt_long_tests ${_i} _name)
   list(GET _rackopt_long_tests ${_j} _cost)
-  if(TEST "${_name}")
-    set_tests_properties("${_name}" PROPERTIES COST ${_cost})
-  endif()
+  set_tests_properties("${_name}" PROPERTIES COST ${_cost})
 endforeach()
-cmake_policy(POP)
