@@ -43,7 +43,7 @@ std::pair<int, int> position_of(const std::string& text, const std::string& need
 }
 
 void expect_error_located_at(const std::string& text, const std::string& at, const std::string& key,
-                  const std::vector<std::string>& parts) {
+                             const std::vector<std::string>& parts) {
   try {
     (void)load_problem_text(text, "t.yaml");
     ADD_FAILURE() << "no error; expected one for " << key;
@@ -82,7 +82,7 @@ TEST(RandomInputForms, AroundTheDesignIsTheDefault) {
 TEST(RandomInputForms, AbsoluteParametersNeedTheOptIn) {
   const std::string mean = kWearWithRandom + "    - {input: contact_ratio, distribution: normal, mean: 1.44, sd: 0.038}\n";
   expect_error_located_at(mean, "mean:", "reliability.random[0].mean",
-               {"gives an absolute distribution", "absolute: true", "shift", "sd", "cv"});
+                          {"gives an absolute distribution", "absolute: true", "shift", "sd", "cv"});
   const std::string weibull = kWearWithRandom + "    - {input: load, distribution: weibull, shape: 3}\n";
   expect_error_located_at(weibull, "weibull", "reliability.random[0].distribution", {"absolute: true", "lognormal"});
   const std::string both = kWearWithRandom + "    - {input: load, distribution: normal, sd: 1 kN, cv: 0.1}\n";
@@ -91,7 +91,7 @@ TEST(RandomInputForms, AbsoluteParametersNeedTheOptIn) {
   expect_error_located_at(cv, "1.5", "reliability.random[0].cv", {"0 < cv < 1"});
   const std::string foreign = kWearWithRandom + "    - {input: load, distribution: lognormal, sigma: 0.1, sd: 1 kN}\n";
   expect_error_located_at(foreign, "sd:", "reliability.random[0].sd",
-               {"not a parameter of a lognormal distribution around the design", "sigma, median_factor"});
+                          {"not a parameter of a lognormal distribution around the design", "sigma, median_factor"});
   const std::string shift_abs = kWearWithRandom + "    - {input: load, distribution: normal, absolute: true, mean: 1 kN, "
                                         "sd: 1 kN, shift: 1 kN}\n";
   expect_error_located_at(shift_abs, "shift:", "reliability.random[0].shift", {"absolute normal", "mean, sd"});

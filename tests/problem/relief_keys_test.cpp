@@ -65,25 +65,25 @@ TEST(ReliefKeys, Errors) {
   const std::string tail = "rack:\n  body_height: 80 mm\n  span: 2 m\nload:\n  force: 10 kN\n";
   // line 5
   expect_error_at(head + "  tip_relief: {amount: -5 um, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
-               "amount");
+                  "amount");
   expect_error_at(head + "  tip_relief: {amount: 2 mm, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
-               "a tenth of the module");
+                  "a tenth of the module");
   expect_error_at(head + "  tip_relief: {amount: 20 um}\n" + tail, 5, 15, "pinion.tip_relief.length",
-               "multiple of the module");
+                  "multiple of the module");
   expect_error_at(head + "  tip_relief: {amount: 20 um, length: 0}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "0 < length");
+                  "0 < length");
   expect_error_at(head + "  tip_relief: {amount: 20 um, length: 80 mm}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "multiples of the module");
+                  "multiples of the module");
   expect_error_at(head + "  tip_relief: {amount: 20 um, length: 3 deg}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "length");
+                  "length");
   expect_error_at(head + "  tip_relief: {amount: 20 um, length: 0.3, shape: round}\n" + tail, 5, 51,
-               "pinion.tip_relief.shape", "linear | parabolic");
+                  "pinion.tip_relief.shape", "linear | parabolic");
   expect_error_at(head + "  tip_relief: {amount: 20 um, lenght: 0.3}\n" + tail, 5, 31, "pinion.tip_relief.lenght",
-               "did you mean 'length'");
+                  "did you mean 'length'");
   expect_error_at(head + "  tip_relief: 20 um\n" + tail, 5, 15, "pinion.tip_relief", "map");
   expect_error_at(head + "rack:\n  body_height: 80 mm\n  span: 2 m\n  root_relief: {amount: 20 um, length: 0.3, shape: x}\n"
-                      "load:\n  force: 10 kN\n",
-               8, 52, "rack.root_relief.shape", "linear | parabolic");
+                         "load:\n  force: 10 kN\n",
+                  8, 52, "rack.root_relief.shape", "linear | parabolic");
 }
 
 TEST(ReliefKeys, OverridesAndDesignVariables) {

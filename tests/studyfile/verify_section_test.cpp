@@ -32,7 +32,7 @@ std::string mark_of(const std::string& text, const std::string& needle) {
 }
 
 void expect_error_at_needle(const std::string& text, const std::string& needle, const std::string& key,
-                  const std::string& says) {
+                            const std::string& says) {
   try {
     (void)load(text);
     ADD_FAILURE() << "no error for " << text;
