@@ -25,6 +25,7 @@
 
 #include <unistd.h>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/fe/deformed_shape.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
@@ -51,11 +52,7 @@ double just_before_an_entry(const Drive& d) {
   return entry - 0.03 * M_PI * d.pinion.module;
 }
 
-double share_sum(const FePosition& p) {
-  double s = 0;
-  for (const FePair& q : p.pairs) s += q.load_share;
-  return s;
-}
+using testing::share_sum;
 
 void check_shape(const FePosition& p) {
   ASSERT_TRUE(p.shape);

@@ -13,6 +13,7 @@
 #include <vector>
 #include <thread>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
@@ -25,7 +26,7 @@
 namespace rackopt::fe {
 namespace {
 
-Drive gantry() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml"); }
+using testing::gantry;
 
 // Fake FE: K = 0.8 K_analytic of the drive it is given, shares moved by
 // +0.05 / -0.05 between the first and the last pair, compliances a known

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -28,11 +29,7 @@ Drive small_drive(const std::vector<std::string>& more = {}) {
   return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml", set);
 }
 
-double share_sum(const FePosition& p) {
-  double s = 0;
-  for (const FePair& q : p.pairs) s += q.load_share;
-  return s;
-}
+using testing::share_sum;
 
 TEST(MeshPositionFe, SmallDriveInvariantsAndTheAnalyticModel) {
   const Drive d = small_drive();

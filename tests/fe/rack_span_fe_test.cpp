@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fe_test_support.hpp"
+#include "fe_test_helpers.hpp"
 #include "rackopt/fe/ccx_deck.hpp"
 #include "rackopt/fe/edge_loads.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
@@ -26,7 +28,8 @@
 namespace rackopt::fe {
 namespace {
 
-constexpr double kE = 210e9, kNu = 0.3;
+using testing::kE;
+using testing::kNu;
 constexpr double kSpan = 0.5, kDepth = 0.031;
 
 struct BeamResult {
@@ -117,11 +120,7 @@ Drive small_span_drive(const std::string& supports = "pin-pin") {
                        "rack.supports=" + supports});
 }
 
-double share_sum(const FePosition& p) {
-  double s = 0;
-  for (const FePair& q : p.pairs) s += q.load_share;
-  return s;
-}
+using testing::share_sum;
 
 // One position at mid-span (a ccx contact solve of the whole span, the
 // longest test of the suite); the same checks near a hinge and on shipped problems are in

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
@@ -33,15 +34,7 @@
 namespace rackopt::fe {
 namespace {
 
-double cpu_seconds() {
-  double t = 0;
-  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
-    rusage u{};
-    getrusage(who, &u);
-    t += u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  }
-  return t;
-}
+using testing::cpu_seconds;
 
 TEST(RackOnSupportsFe, DISABLED_RackSupportsTable) {
   const char* env = std::getenv("RACKOPT_FE_PROBLEMS");

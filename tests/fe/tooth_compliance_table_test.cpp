@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -18,16 +19,7 @@
 namespace rackopt::fe {
 namespace {
 
-// CPU seconds of this process and its finished children (ccx) so far.
-double cpu_seconds() {
-  double t = 0;
-  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
-    rusage u{};
-    getrusage(who, &u);
-    t += u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  }
-  return t;
-}
+using testing::cpu_seconds;
 
 TEST(FeToothCompliance, DISABLED_ToothComplianceTable) {
   const char* levels_env = std::getenv("RACKOPT_FE_LEVELS");

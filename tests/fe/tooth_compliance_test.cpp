@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fe_test_helpers.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -19,8 +20,7 @@
 namespace rackopt::fe {
 namespace {
 
-// z 20, m 4 mm, 20 deg: the smallest shipped design.
-Drive gantry() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml"); }
+using testing::gantry;  // z 20, m 4 mm, 20 deg: the smallest shipped design
 
 std::vector<double> path_points(const MeshGeometry& g) {
   const double lo = std::max(g.path.s_start, g.path.s_form), hi = g.path.s_end;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "life_test_drives.hpp"
 #include "rackopt/life/sample_domain.hpp"
 #include "rackopt/life/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -18,11 +19,7 @@
 namespace rackopt {
 namespace {
 
-Drive ship_lift() {
-  Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
-  d.wear.update_profile = false;
-  return d;
-}
+using test::ship_lift_fixed_profile;
 
 WearReliabilityOptions quick(long samples) {
   WearReliabilityOptions o;
@@ -66,7 +63,7 @@ TEST(SampleDomain, OneRuleForEveryInput) {
 // A contact ratio of exactly 0 is a sampled value, not "no sample": the drive
 // fails at once. (It used to give the nominal life.)
 TEST(FailedSamples, ContactRatioZeroFailsAtOnceInsteadOfTheNominalLife) {
-  const Drive d = ship_lift();
+  const Drive d = ship_lift_fixed_profile();
   const WearModel model(d);
   const WearLifeResult nominal = model.life();
   ASSERT_GT(nominal.life_years, 10.0);
@@ -84,7 +81,7 @@ TEST(FailedSamples, ContactRatioZeroFailsAtOnceInsteadOfTheNominalLife) {
 // and overflows to +inf for a quarter: no sample may get the nominal life, the
 // zeros fail at once, the infinities are failed evaluations counted once.
 TEST(FailedSamples, UnderflowingAndOverflowingContactRatiosNeverGiveTheNominalLife) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.reliability.inputs = {input("contact_ratio", RandomInput::Distribution::kWeibull, 1.4, 0.001, true)};
   const WearReliabilityResult r = run_wear_reliability(d, quick(200));
   std::size_t zeros = 0, infinite = 0;
@@ -121,7 +118,7 @@ TEST(FailedSamples, UnderflowingAndOverflowingContactRatiosNeverGiveTheNominalLi
 // once; the exact path is conditional on a positive hardness like the
 // summary. (It used to stop the run with an InputError.)
 TEST(FailedSamples, NonPositiveHardnessIsAFailedSampleAndTheRunGoesOn) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   RandomInput h = input("surface_hardness", RandomInput::Distribution::kNormal, 0.0, 0.0, false);
   h.cv = 0.5;
   d.reliability.inputs = {h};
@@ -165,7 +162,7 @@ TEST(FailedSamples, NonPositiveHardnessIsAFailedSampleAndTheRunGoesOn) {
 // The same rule for the load (life decreases with it): non-positive loads are
 // failed evaluations, counted and warned once.
 TEST(FailedSamples, NonPositiveLoadFollowsTheSameRule) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   RandomInput f = input("load", RandomInput::Distribution::kNormal, 0.0, 0.0, false);
   f.cv = 0.5;
   d.reliability.inputs = {f};
@@ -183,7 +180,7 @@ TEST(FailedSamples, NonPositiveLoadFollowsTheSameRule) {
 // failed_at_start exactly 1 (it was above 1 when [eps] > eps_max).
 TEST(FailedSamples, EveryContactRatioOutOfRangeIsAStatusNotAnError) {
   for (int variant = 0; variant < 3; ++variant) {
-    Drive d = ship_lift();
+    Drive d = ship_lift_fixed_profile();
     if (variant == 0) d.reliability.inputs.front().a = 0.5;   // wholly above eps_max
     if (variant == 1) d.reliability.inputs.front().a = -0.6;  // wholly below 1
     if (variant == 2) d.wear.min_contact_ratio = 1.6;         // [eps] > eps_max = 1.536
@@ -207,7 +204,7 @@ TEST(FailedSamples, EveryContactRatioOutOfRangeIsAStatusNotAnError) {
 
 // More samples failing at once than 1 - R: the life at R is 0, said once.
 TEST(FailedSamples, LifeAtRIsZeroWhenMoreThanOneMinusRFailAtOnce) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.reliability.reliabilities = {0.9, 0.999};  // about 0.6 % of the samples start above eps_max
   const WearReliabilityResult r = run_wear_reliability(d, quick(1000));
   ASSERT_GT(r.summary.immediate_failures, 1u);
@@ -225,7 +222,7 @@ TEST(FailedSamples, LifeAtRIsZeroWhenMoreThanOneMinusRFailAtOnce) {
 // No sample inside the domain (reachable only from code: the problem loader
 // refuses a non-positive absolute mean): a status, no life at R, no throw.
 TEST(FailedSamples, NoValidSampleIsAStatusNotAnError) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.reliability.inputs = {input("surface_hardness", RandomInput::Distribution::kNormal, -1e9, 1e6, true)};
   WearReliabilityResult r;
   ASSERT_NO_THROW(r = run_wear_reliability(d, quick(32)));
@@ -242,7 +239,7 @@ TEST(FailedSamples, NoValidSampleIsAStatusNotAnError) {
 // (the gamma fit gave shape 6e17 and a KS test "accepted" at D = 0.95), the
 // empirical results only, all finite.
 TEST(FailedSamples, LivesWithoutResolvableSpreadAreNotFitted) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.reliability.inputs.front().a = 0.0;
   d.reliability.inputs.front().b = 1e-9;
   const WearReliabilityResult r = run_wear_reliability(d, quick(200));

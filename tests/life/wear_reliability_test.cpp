@@ -9,19 +9,16 @@
 #include <iostream>
 #include <string>
 
+#include "life_test_drives.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
 namespace rackopt {
 namespace {
 
-Drive ship_lift() {
-  Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
-  d.wear.update_profile = false;  // cheaper; the statistics are what is tested here
-  return d;
-}
+using test::ship_lift_fixed_profile;
 
 TEST(WearReliability, SameResultOnAnyThreadCount) {
-  const Drive d = ship_lift();
+  const Drive d = ship_lift_fixed_profile();
   WearReliabilityOptions o;
   o.samples = 64;
   o.bootstrap_replicates = 20;
@@ -42,7 +39,7 @@ TEST(WearReliability, SameResultOnAnyThreadCount) {
 // deviations. The 40-year point checks the bounds: without them the exact
 // R(40 y) would be 1 while about 1 % of the samples start above eps_max.
 TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
-  const Drive d = ship_lift();
+  const Drive d = ship_lift_fixed_profile();
   ASSERT_EQ(d.reliability.inputs.size(), 1u);
   WearReliabilityOptions o;
   o.samples = 2000;
@@ -183,7 +180,7 @@ TEST(WearReliability, LifeTableDoesNotSmearAFailureModeSwitch) {
 // lives at R are 0, and nothing throws (an optimizer sees an infeasible-free
 // but worthless design, not a crash).
 TEST(WearReliability, ScatterWhollyAboveTheLargestContactRatioFailsEverySample) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.reliability.inputs.front().a = 1.0;  // shift: eps around 2.5, above eps_max = 1.536
   d.reliability.inputs.front().b = 0.01;
   WearReliabilityOptions o;
@@ -197,7 +194,7 @@ TEST(WearReliability, ScatterWhollyAboveTheLargestContactRatioFailsEverySample) 
 }
 
 TEST(WearReliability, ImpossibleSamplesFailAtOnceWithoutStoppingTheRun) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   // Centred on the design's own contact ratio, which at the shipped zero
   // clearance is the largest possible: half the samples above it.
   d.reliability.inputs.front().a = 0.0;
@@ -221,7 +218,7 @@ namespace {
 // at R = 0.5): a test of both the sampler and the exact path at a sample
 // size where a bias of half a percent would show.
 TEST(WearReliability, TenThousandSamples) {
-  Drive d = ship_lift();
+  Drive d = ship_lift_fixed_profile();
   d.wear.profile_points = 60;  // cost; the statistics are what is tested
   WearReliabilityOptions o;
   o.samples = 10000;

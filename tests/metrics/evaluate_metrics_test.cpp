@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "metrics_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/life/wear_reliability.hpp"
@@ -22,19 +23,10 @@
 namespace rackopt::metrics {
 namespace {
 
-std::string path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml"; }
-Drive problem(const std::string& name) { return load_problem(path(name)); }
-
-std::vector<MetricRequest> requests(std::initializer_list<const char*> texts) {
-  std::vector<MetricRequest> out;
-  for (const char* t : texts) out.push_back(parse_metric_request(t));
-  return out;
-}
-
-MetricValues eval(const Drive& d, std::initializer_list<const char*> texts, const MetricOptions& o = {}) {
-  const std::vector<MetricRequest> r = requests(texts);
-  return evaluate_metrics(d, r, o);
-}
+using test::eval;
+using test::path;
+using test::problem;
+using test::requests;
 
 TEST(EvaluateMetrics, OnlyTheNeededModelsRunEachOnce) {
   const Drive railway = problem("rack_railway");

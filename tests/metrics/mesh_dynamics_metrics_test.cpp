@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "metrics_test_support.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -18,13 +19,8 @@
 namespace rackopt::metrics {
 namespace {
 
-std::string path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml"; }
-
-std::vector<MetricRequest> requests(std::initializer_list<const char*> texts) {
-  std::vector<MetricRequest> out;
-  for (const char* t : texts) out.push_back(parse_metric_request(t));
-  return out;
-}
+using test::path;
+using test::requests;
 
 const char* const kNames[] = {"mesh_ripple_max", "mesh_ripple_mean", "transmission_error_pp",
                               "transmission_error_pp_period_max", "transmission_error_pp_period_mean"};

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "metrics_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
@@ -22,15 +23,9 @@
 namespace rackopt::metrics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-std::string path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml"; }
-
-MetricValues eval(const Drive& d, std::initializer_list<const char*> texts, const MetricOptions& o = {}) {
-  std::vector<MetricRequest> r;
-  for (const char* t : texts) r.push_back(parse_metric_request(t));
-  return evaluate_metrics(d, r, o);
-}
+using test::eval;
+using test::kPi;
+using test::path;
 
 // ISO 6336-3 N_F for b/h below 3 (both bundled drives): b/h = 3.
 constexpr double kNfShort = 9.0 / 13.0;

@@ -21,6 +21,7 @@
 #include <numbers>
 #include <string>
 
+#include "metrics_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -28,11 +29,8 @@
 namespace rackopt::metrics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-Drive problem(const std::string& name) {
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml");
-}
+using test::kPi;
+using test::problem;
 
 // ISO 6336-3:2006 section 6 (method B geometry) for an external spur gear cut
 // by a rack cutter without protuberance, load at the tip (d_en = d_a):

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "problem_test_support.hpp"
 #include "rackopt/problem/input_file.hpp"
 #include "rackopt/problem/input_limits.hpp"
 #include "rackopt/problem/marked_tree.hpp"
@@ -22,16 +23,7 @@
 namespace rackopt {
 namespace {
 
-const char* const kMinimal =
-    "pinion:\n"               // 1
-    "  teeth: 20\n"           // 2
-    "  module: 10 mm\n"       // 3
-    "  face_width: 50 mm\n"   // 4
-    "rack:\n"                 // 5
-    "  body_height: 80 mm\n"  // 6
-    "  span: 2 m\n"           // 7
-    "load:\n"                 // 8
-    "  force: 10 kN\n";       // 9
+using test::kMinimal;
 
 // Runs `load` and returns the InputError it throws (fails the test if none).
 template <typename F>

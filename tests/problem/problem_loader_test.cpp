@@ -4,6 +4,7 @@
 // Expected numbers come from the sources the problem files cite (seed tables,
 // physics.md 12.2 / 14.1 / 14.3) or from hand arithmetic written next to the
 // assertion, never from running the loader.
+#include "problem_test_support.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -16,43 +17,12 @@ namespace rackopt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
-std::string problem_path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name; }
-
-// A small valid problem; line numbers matter to the tests below.
-const char* const kMinimal =
-    "pinion:\n"                   // 1
-    "  teeth: 20\n"               // 2
-    "  module: 10 mm\n"           // 3
-    "  face_width: 50 mm\n"       // 4
-    "rack:\n"                     // 5
-    "  body_height: 80 mm\n"      // 6
-    "  span: 2 m\n"               // 7
-    "load:\n"                     // 8
-    "  force: 10 kN\n";           // 9
-
-struct Expected {
-  int line;
-  int column;
-  std::string key;
-  std::string fragment;  // must appear in the message
-  std::string file = "t.yaml";
-};
-
-void expect_error(const std::string& text, const Expected& want, const std::vector<std::string>& overrides = {}) {
-  try {
-    load_problem_text(text, "t.yaml", overrides);
-    ADD_FAILURE() << "no error; expected " << want.fragment;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.mark().file, want.file) << e.what();
-    EXPECT_EQ(e.mark().line, want.line) << e.what();
-    EXPECT_EQ(e.mark().column, want.column) << e.what();
-    EXPECT_EQ(e.key_path(), want.key) << e.what();
-    EXPECT_NE(std::string(e.message()).find(want.fragment), std::string::npos)
-        << "message: " << e.message() << "\nwanted: " << want.fragment;
-  }
-}
+using test::expect_error;
+using test::Expected;
+using test::kDeg;
+using test::kMinimal;
+using test::problem_path;
 
 // ---------------------------------------------------------------- bundled files
 

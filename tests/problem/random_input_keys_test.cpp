@@ -2,6 +2,7 @@
 // and the one map of problem keys -> the random inputs whose design value
 // they change: an override of such a key next to an absolute input is an
 // InputError naming both keys.
+#include "problem_test_support.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
 
 #include <gtest/gtest.h>
@@ -14,11 +15,11 @@
 namespace rackopt {
 namespace {
 
-constexpr double kHB = 9.80665e6;  // Pa per Brinell number
+using test::kHB;  // Pa per Brinell number
 
 std::string ship_lift() { return std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"; }
 
-const std::string kWear =
+const std::string kWearWithRandom =
     "pinion: {teeth: 20, module: 10 mm, face_width: 50 mm}\n"  // 1
     "rack: {body_height: 80 mm, span: 2 m}\n"                    // 2
     "load: {force: 10 kN}\n"                                     // 3
@@ -41,8 +42,8 @@ std::pair<int, int> position_of(const std::string& text, const std::string& need
   return {line, column};
 }
 
-void expect_error(const std::string& text, const std::string& at, const std::string& key,
-                  const std::vector<std::string>& parts) {
+void expect_error_located_at(const std::string& text, const std::string& at, const std::string& key,
+                             const std::vector<std::string>& parts) {
   try {
     (void)load_problem_text(text, "t.yaml");
     ADD_FAILURE() << "no error; expected one for " << key;
@@ -56,7 +57,7 @@ void expect_error(const std::string& text, const std::string& at, const std::str
 }
 
 TEST(RandomInputForms, AroundTheDesignIsTheDefault) {
-  const Drive d = load_problem_text(kWear +
+  const Drive d = load_problem_text(kWearWithRandom +
                                         "    - {input: contact_ratio, distribution: normal, shift: -0.1, sd: 0.03}\n"
                                         "    - {input: wear_coefficient, distribution: lognormal, sigma: 0.3}\n"
                                         "    - {input: load, distribution: normal, cv: 0.05}\n"
@@ -79,25 +80,25 @@ TEST(RandomInputForms, AroundTheDesignIsTheDefault) {
 }
 
 TEST(RandomInputForms, AbsoluteParametersNeedTheOptIn) {
-  const std::string mean = kWear + "    - {input: contact_ratio, distribution: normal, mean: 1.44, sd: 0.038}\n";
-  expect_error(mean, "mean:", "reliability.random[0].mean",
-               {"gives an absolute distribution", "absolute: true", "shift", "sd", "cv"});
-  const std::string weibull = kWear + "    - {input: load, distribution: weibull, shape: 3}\n";
-  expect_error(weibull, "weibull", "reliability.random[0].distribution", {"absolute: true", "lognormal"});
-  const std::string both = kWear + "    - {input: load, distribution: normal, sd: 1 kN, cv: 0.1}\n";
-  expect_error(both, "cv:", "reliability.random[0].cv", {"not both"});
-  const std::string cv = kWear + "    - {input: load, distribution: normal, cv: 1.5}\n";
-  expect_error(cv, "1.5", "reliability.random[0].cv", {"0 < cv < 1"});
-  const std::string foreign = kWear + "    - {input: load, distribution: lognormal, sigma: 0.1, sd: 1 kN}\n";
-  expect_error(foreign, "sd:", "reliability.random[0].sd",
-               {"not a parameter of a lognormal distribution around the design", "sigma, median_factor"});
-  const std::string shift_abs = kWear + "    - {input: load, distribution: normal, absolute: true, mean: 1 kN, "
+  const std::string mean = kWearWithRandom + "    - {input: contact_ratio, distribution: normal, mean: 1.44, sd: 0.038}\n";
+  expect_error_located_at(mean, "mean:", "reliability.random[0].mean",
+                          {"gives an absolute distribution", "absolute: true", "shift", "sd", "cv"});
+  const std::string weibull = kWearWithRandom + "    - {input: load, distribution: weibull, shape: 3}\n";
+  expect_error_located_at(weibull, "weibull", "reliability.random[0].distribution", {"absolute: true", "lognormal"});
+  const std::string both = kWearWithRandom + "    - {input: load, distribution: normal, sd: 1 kN, cv: 0.1}\n";
+  expect_error_located_at(both, "cv:", "reliability.random[0].cv", {"not both"});
+  const std::string cv = kWearWithRandom + "    - {input: load, distribution: normal, cv: 1.5}\n";
+  expect_error_located_at(cv, "1.5", "reliability.random[0].cv", {"0 < cv < 1"});
+  const std::string foreign = kWearWithRandom + "    - {input: load, distribution: lognormal, sigma: 0.1, sd: 1 kN}\n";
+  expect_error_located_at(foreign, "sd:", "reliability.random[0].sd",
+                          {"not a parameter of a lognormal distribution around the design", "sigma, median_factor"});
+  const std::string shift_abs = kWearWithRandom + "    - {input: load, distribution: normal, absolute: true, mean: 1 kN, "
                                         "sd: 1 kN, shift: 1 kN}\n";
-  expect_error(shift_abs, "shift:", "reliability.random[0].shift", {"absolute normal", "mean, sd"});
+  expect_error_located_at(shift_abs, "shift:", "reliability.random[0].shift", {"absolute normal", "mean, sd"});
 }
 
 TEST(RandomInputKeys, OneMapOfKeysToInputs) {
-  const Drive force = load_problem_text(kWear, "t.yaml");         // load given as a force
+  const Drive force = load_problem_text(kWearWithRandom, "t.yaml");         // load given as a force
   const Drive torque = load_problem(ship_lift());                  // load given as a torque
   using V = std::vector<std::string>;
   EXPECT_EQ(random_inputs_changed_by("mounting.clearance", force), V{"contact_ratio"});

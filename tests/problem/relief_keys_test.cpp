@@ -9,25 +9,16 @@
 #include <utility>
 #include <vector>
 
+#include "problem_test_support.hpp"
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
 namespace rackopt {
 namespace {
 
-// Line numbers matter to the error tests.
-const std::string kBase =
-    "pinion:\n"                   // 1
-    "  teeth: 20\n"               // 2
-    "  module: 10 mm\n"           // 3
-    "  face_width: 50 mm\n"       // 4
-    "rack:\n"                     // 5
-    "  body_height: 80 mm\n"      // 6
-    "  span: 2 m\n"               // 7
-    "load:\n"                     // 8
-    "  force: 10 kN\n";           // 9
+using test::kMinimal;
 
-void expect_error(const std::string& text, int line, int column, const std::string& key, const std::string& fragment) {
+void expect_error_at(const std::string& text, int line, int column, const std::string& key, const std::string& fragment) {
   try {
     load_problem_text(text, "t.yaml");
     ADD_FAILURE() << "no error; expected " << fragment;
@@ -42,7 +33,7 @@ void expect_error(const std::string& text, int line, int column, const std::stri
 }
 
 TEST(ReliefKeys, DefaultIsNone) {
-  const Drive d = load_problem_text(kBase, "t.yaml");
+  const Drive d = load_problem_text(kMinimal, "t.yaml");
   for (const ProfileRelief* r : {&d.pinion.tip_relief, &d.pinion.root_relief, &d.rack.tip_relief, &d.rack.root_relief}) {
     EXPECT_FALSE(r->active());
     EXPECT_EQ(r->amount, 0.0);
@@ -73,30 +64,30 @@ TEST(ReliefKeys, Errors) {
   const std::string head = "pinion:\n  teeth: 20\n  module: 10 mm\n  face_width: 50 mm\n";  // lines 1-4
   const std::string tail = "rack:\n  body_height: 80 mm\n  span: 2 m\nload:\n  force: 10 kN\n";
   // line 5
-  expect_error(head + "  tip_relief: {amount: -5 um, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
-               "amount");
-  expect_error(head + "  tip_relief: {amount: 2 mm, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
-               "a tenth of the module");
-  expect_error(head + "  tip_relief: {amount: 20 um}\n" + tail, 5, 15, "pinion.tip_relief.length",
-               "multiple of the module");
-  expect_error(head + "  tip_relief: {amount: 20 um, length: 0}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "0 < length");
-  expect_error(head + "  tip_relief: {amount: 20 um, length: 80 mm}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "multiples of the module");
-  expect_error(head + "  tip_relief: {amount: 20 um, length: 3 deg}\n" + tail, 5, 39, "pinion.tip_relief.length",
-               "length");
-  expect_error(head + "  tip_relief: {amount: 20 um, length: 0.3, shape: round}\n" + tail, 5, 51,
-               "pinion.tip_relief.shape", "linear | parabolic");
-  expect_error(head + "  tip_relief: {amount: 20 um, lenght: 0.3}\n" + tail, 5, 31, "pinion.tip_relief.lenght",
-               "did you mean 'length'");
-  expect_error(head + "  tip_relief: 20 um\n" + tail, 5, 15, "pinion.tip_relief", "map");
-  expect_error(head + "rack:\n  body_height: 80 mm\n  span: 2 m\n  root_relief: {amount: 20 um, length: 0.3, shape: x}\n"
-                      "load:\n  force: 10 kN\n",
-               8, 52, "rack.root_relief.shape", "linear | parabolic");
+  expect_error_at(head + "  tip_relief: {amount: -5 um, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
+                  "amount");
+  expect_error_at(head + "  tip_relief: {amount: 2 mm, length: 0.3}\n" + tail, 5, 24, "pinion.tip_relief.amount",
+                  "a tenth of the module");
+  expect_error_at(head + "  tip_relief: {amount: 20 um}\n" + tail, 5, 15, "pinion.tip_relief.length",
+                  "multiple of the module");
+  expect_error_at(head + "  tip_relief: {amount: 20 um, length: 0}\n" + tail, 5, 39, "pinion.tip_relief.length",
+                  "0 < length");
+  expect_error_at(head + "  tip_relief: {amount: 20 um, length: 80 mm}\n" + tail, 5, 39, "pinion.tip_relief.length",
+                  "multiples of the module");
+  expect_error_at(head + "  tip_relief: {amount: 20 um, length: 3 deg}\n" + tail, 5, 39, "pinion.tip_relief.length",
+                  "length");
+  expect_error_at(head + "  tip_relief: {amount: 20 um, length: 0.3, shape: round}\n" + tail, 5, 51,
+                  "pinion.tip_relief.shape", "linear | parabolic");
+  expect_error_at(head + "  tip_relief: {amount: 20 um, lenght: 0.3}\n" + tail, 5, 31, "pinion.tip_relief.lenght",
+                  "did you mean 'length'");
+  expect_error_at(head + "  tip_relief: 20 um\n" + tail, 5, 15, "pinion.tip_relief", "map");
+  expect_error_at(head + "rack:\n  body_height: 80 mm\n  span: 2 m\n  root_relief: {amount: 20 um, length: 0.3, shape: x}\n"
+                         "load:\n  force: 10 kN\n",
+                  8, 52, "rack.root_relief.shape", "linear | parabolic");
 }
 
 TEST(ReliefKeys, OverridesAndDesignVariables) {
-  const Drive d = load_problem_text(kBase, "t.yaml",
+  const Drive d = load_problem_text(kMinimal, "t.yaml",
                                     {"pinion.tip_relief.amount=25 um", "pinion.tip_relief.length=0.4"});
   EXPECT_DOUBLE_EQ(d.pinion.tip_relief.amount, 25e-6);
   EXPECT_DOUBLE_EQ(d.pinion.tip_relief.length, 4e-3);
@@ -105,7 +96,7 @@ TEST(ReliefKeys, OverridesAndDesignVariables) {
   EXPECT_EQ(problem_key_kind("pinion.tip_relief.shape"), std::nullopt);
   // A study varies amount (SI) and length (multiple of the module): the
   // length follows the module.
-  const ProblemTree tree = load_problem_tree(kBase, "t.yaml", {"pinion.tip_relief.amount=10 um",
+  const ProblemTree tree = load_problem_tree(kMinimal, "t.yaml", {"pinion.tip_relief.amount=10 um",
                                                                "pinion.tip_relief.length=0.3"});
   const std::vector<std::pair<std::string, double>> x{
       {"pinion.tip_relief.amount", 30e-6}, {"pinion.tip_relief.length", 0.5}, {"pinion.module", 0.02}};

@@ -11,50 +11,20 @@
 #include <utility>
 #include <vector>
 
+#include "problem_test_support.hpp"
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
 namespace rackopt {
 namespace {
 
-std::string problem_path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name; }
-
-// Line numbers matter to the error tests.
-const char* const kBase =
-    "pinion:\n"                   // 1
-    "  teeth: 20\n"               // 2
-    "  module: 10 mm\n"           // 3
-    "  face_width: 50 mm\n"       // 4
-    "rack:\n"                     // 5
-    "  body_height: 80 mm\n"      // 6
-    "  span: 2 m\n"               // 7
-    "load:\n"                     // 8
-    "  force: 10 kN\n";           // 9
-
-struct Expected {
-  int line;
-  int column;
-  std::string key;
-  std::string fragment;
-  std::string file = "t.yaml";
-};
-
-void expect_error(const std::string& text, const Expected& want, const std::vector<std::string>& overrides = {}) {
-  try {
-    load_problem_text(text, "t.yaml", overrides);
-    ADD_FAILURE() << "no error; expected " << want.fragment;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.mark().file, want.file) << e.what();
-    EXPECT_EQ(e.mark().line, want.line) << e.what();
-    EXPECT_EQ(e.mark().column, want.column) << e.what();
-    EXPECT_EQ(e.key_path(), want.key) << e.what();
-    EXPECT_NE(std::string(e.message()).find(want.fragment), std::string::npos)
-        << "message: " << e.message() << "\nwanted: " << want.fragment;
-  }
-}
+using test::expect_error;
+using test::Expected;
+using test::kMinimal;
+using test::problem_path;
 
 TEST(StressKeys, DefaultsMeanNotGivenOrOne) {
-  const Drive d = load_problem_text(kBase, "t.yaml");
+  const Drive d = load_problem_text(kMinimal, "t.yaml");
   EXPECT_EQ(d.pinion.material.allowable_bending, 0.0);
   EXPECT_EQ(d.pinion.material.allowable_contact, 0.0);
   EXPECT_EQ(d.rack.material.allowable_bending, 0.0);
@@ -96,7 +66,7 @@ TEST(StressKeys, EveryKeyToSIAndMembersTakeTheirMaterials) {
   // The load factors do not touch the model load: F = T / r_b, r_b = m z cos(20 deg) / 2.
   EXPECT_NEAR(d.load.force, 1000.0 / (0.5 * 0.010 * 20 * std::cos(20 * M_PI / 180)), 1e-9);
   // Factors exactly 1 and 10 are the ends of the closed range.
-  const Drive edge = load_problem_text(std::string(kBase) + "  application_factor: 1\n  dynamic_factor: 10\n", "t.yaml");
+  const Drive edge = load_problem_text(std::string(kMinimal) + "  application_factor: 1\n  dynamic_factor: 10\n", "t.yaml");
   EXPECT_EQ(edge.load.application_factor, 1.0);
   EXPECT_EQ(edge.load.dynamic_factor, 10.0);
 }
@@ -117,20 +87,20 @@ TEST(StressKeys, BareNumbersTakeTheKindsDefaultUnit) {
 
 TEST(StressKeys, ErrorsPointAtTheValue) {
   // "430" is 430 GPa: out of range, and the message says why.
-  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_bending: 430}\n" + std::string(kBase),
+  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_bending: 430}\n" + std::string(kMinimal),
                {2, 51, "materials.steel.allowable_bending", "a bare number means GPa: write e.g. 430 MPa"});
-  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 0 MPa}\n" + std::string(kBase),
+  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 0 MPa}\n" + std::string(kMinimal),
                {2, 51, "materials.steel.allowable_contact", "0.001 GPa <= allowable_contact <= 5 GPa"});
-  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 1200 mm}\n" + std::string(kBase),
+  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_contact: 1200 mm}\n" + std::string(kMinimal),
                {2, 51, "materials.steel.allowable_contact", "a length but a modulus is expected"});
   // Load factors below 1 are refused, not warned about.
-  expect_error(std::string(kBase) + "  application_factor: 0.9\n",
+  expect_error(std::string(kMinimal) + "  application_factor: 0.9\n",
                {10, 23, "load.application_factor", "1 <= application_factor <= 10 (ISO 6336 load factors are >= 1"});
-  expect_error(std::string(kBase) + "  face_load_factor_bending: 0\n",
+  expect_error(std::string(kMinimal) + "  face_load_factor_bending: 0\n",
                {10, 29, "load.face_load_factor_bending", "out of range"});
-  expect_error(std::string(kBase) + "  transverse_load_factor: 11\n",
+  expect_error(std::string(kMinimal) + "  transverse_load_factor: 11\n",
                {10, 27, "load.transverse_load_factor", "<= 10"});
-  expect_error(std::string(kBase) + "  dynamic_factor: 1.1 mm\n", {10, 19, "load.dynamic_factor", "mm"});
+  expect_error(std::string(kMinimal) + "  dynamic_factor: 1.1 mm\n", {10, 19, "load.dynamic_factor", "mm"});
   expect_error(
       "pinion: {teeth: 20, module: 10 mm, face_width: 50 mm}\n"
       "rack: {body_height: 80 mm, span: 2 m, root_radius: -1 mm}\n"
@@ -139,22 +109,22 @@ TEST(StressKeys, ErrorsPointAtTheValue) {
 }
 
 TEST(StressKeys, UnknownKeysSuggestTheNewOnes) {
-  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_bend: 400 MPa}\n" + std::string(kBase),
+  expect_error("materials:\n  steel: {E: 210 GPa, nu: 0.3, allowable_bend: 400 MPa}\n" + std::string(kMinimal),
                {2, 32, "materials.steel.allowable_bend", "did you mean 'allowable_bending'?"});
-  expect_error(std::string(kBase) + "  aplication_factor: 1.2\n",
+  expect_error(std::string(kMinimal) + "  aplication_factor: 1.2\n",
                {10, 3, "load.aplication_factor", "did you mean 'application_factor'?"});
-  expect_error(std::string(kBase) + "  face_load_factor_bend: 1.2\n",
+  expect_error(std::string(kMinimal) + "  face_load_factor_bend: 1.2\n",
                {10, 3, "load.face_load_factor_bend", "did you mean 'face_load_factor_bending'?"});
   expect_error("pinion: {teeth: 20, module: 10 mm, face_width: 50 mm}\n"
                "rack: {body_height: 80 mm, span: 2 m, root_raduis: 4 mm}\n"
                "load: {force: 10 kN}\n",
                {2, 39, "rack.root_raduis", "did you mean 'root_radius'?"});
   // The allowed-keys list names the new load keys.
-  expect_error(std::string(kBase) + "  k_a: 1.2\n", {10, 3, "load.k_a", "application_factor, dynamic_factor"});
+  expect_error(std::string(kMinimal) + "  k_a: 1.2\n", {10, 3, "load.k_a", "application_factor, dynamic_factor"});
 }
 
 TEST(StressKeys, OverridesAndDesignValues) {
-  const std::string text = "materials:\n  steel: {E: 210 GPa, nu: 0.3}\n" + std::string(kBase);
+  const std::string text = "materials:\n  steel: {E: 210 GPa, nu: 0.3}\n" + std::string(kMinimal);
   const Drive d = load_problem_text(text, "t.yaml",
                                     {"materials.steel.allowable_bending=500 MPa", "load.face_load_factor=1.4",
                                      "rack.root_radius=5 mm"});

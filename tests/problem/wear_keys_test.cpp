@@ -5,6 +5,7 @@
 // = 31 557 600 s; 1 mm = 1e-3 m) and from physics.md 11.3 / 12.2 for the
 // bundled ship lift, never from running the loader. Error positions
 // (line:column) are counted by hand in the YAML text of each test.
+#include "problem_test_support.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -16,10 +17,12 @@
 namespace rackopt {
 namespace {
 
-constexpr double kHB = 9.80665e6;         // Pa per Brinell number, physics.md 10.1
+using test::kHB;  // Pa per Brinell number
 constexpr double kYear = 365.25 * 86400;  // s, Julian year
 
-std::string problem_path(const std::string& name) { return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name; }
+using test::expect_error;
+using test::Expected;
+using test::problem_path;
 
 // Lines 1..9: a valid drive without wear (module 10 mm); tests append from line 10.
 const std::string kDrive =
@@ -38,28 +41,6 @@ const std::string kWear = kDrive +
                           "wear:\n"                 // 10
                           "  coefficient: 1e-6\n"   // 11
                           "  hardness: 600 HB\n";   // 12
-
-struct Expected {
-  int line;
-  int column;
-  std::string key;
-  std::string fragment;
-  std::string file = "t.yaml";
-};
-
-void expect_error(const std::string& text, const Expected& want, const std::vector<std::string>& overrides = {}) {
-  try {
-    load_problem_text(text, "t.yaml", overrides);
-    ADD_FAILURE() << "no error; expected " << want.fragment;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.mark().file, want.file) << e.what();
-    EXPECT_EQ(e.mark().line, want.line) << e.what();
-    EXPECT_EQ(e.mark().column, want.column) << e.what();
-    EXPECT_EQ(e.key_path(), want.key) << e.what();
-    EXPECT_NE(std::string(e.message()).find(want.fragment), std::string::npos)
-        << "message: " << e.message() << "\nwanted: " << want.fragment;
-  }
-}
 
 double polynomial(const std::vector<double>& c, double h) {
   double v = 0;

@@ -4,19 +4,20 @@
 #include <cmath>
 #include <numbers>
 
+#include "stiffness_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 
 namespace rackopt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-double deg(double d) { return d * kPi / 180.0; }
-double inv(double a) { return std::tan(a) - a; }
+using test::deg;
+using test::inv;
+using test::kPi;
 
 // Hand-filled geometry (physics.md 1 and 3.1); theta_f with the TOOL addendum
 // h_a0* = dedendum_coef and cutter tip radius rho* = tip_radius_coef.
-MeshGeometry make_geometry(const PinionSpec& p) {
+MeshGeometry fillet_geometry(const PinionSpec& p) {
   MeshGeometry g;
   const double m = p.module, z = p.teeth, a0 = p.pressure_angle, x = p.profile_shift;
   g.pressure_angle = a0;
@@ -73,7 +74,7 @@ TEST(FilletFoundation, UfIsWhereTheLineOfActionCrossesTheCentreLine) {
   // tangent to the base circle at T, polar angle theta_c - alpha_c (the
   // involute normal at C). Intersect line CT with the centre line x = 0.
   const PinionSpec p = seed000();
-  const MeshGeometry g = make_geometry(p);
+  const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   const double rb = g.pinion.base_radius, a2 = g.pinion.half_base_angle;
   for (double frac : {0.05, 0.5, 1.0}) {
@@ -89,7 +90,7 @@ TEST(FilletFoundation, UfIsWhereTheLineOfActionCrossesTheCentreLine) {
 TEST(FilletFoundation, FormulaWithHandCoefficientsAndFaceWidthScaling) {
   // theta_f = 0.1111149 rad (3.1 formula, seed 000), h_f = 316.2092/150.
   const PinionSpec p = seed000();
-  const MeshGeometry g = make_geometry(p);
+  const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   EXPECT_NEAR(f.theta_f(), 0.11111488, 1e-8);
   EXPECT_NEAR(f.h_f(), 0.316209154 / 0.150, 1e-9);
@@ -112,7 +113,7 @@ TEST(FilletFoundation, Seed000OrderOfMagnitude) {
   // bore (150 mm) the pitch-point value is 2.9 GN/m; accept 2-4.5 GN/m over the
   // middle of the path (the value depends on the bore and the contact).
   const PinionSpec p = seed000();
-  const MeshGeometry g = make_geometry(p);
+  const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   const double k = 1.0 / f.at(g.path.s_pitch, p.face_width);
   EXPECT_GT(k, 2.0e9);
@@ -129,7 +130,7 @@ TEST(FilletFoundation, PositiveAlongThePathAndOutsideRangeFlag) {
       p.addendum_coef = 1.0;
       p.dedendum_coef = 1.25;
       p.tip_radius_coef = 0.2;  // below c*/(1 - sin a0) for every a0 here
-      const MeshGeometry g0 = make_geometry(p);
+      const MeshGeometry g0 = fillet_geometry(p);
       p.bore_radius = 0.5 * g0.pinion.root_radius;  // h_f = 2
       const FilletFoundationCompliance f(g0, p);
       EXPECT_EQ(f.outside_fitted_range(), f.theta_f() > 0.12 || f.theta_f() < 0.01);
@@ -145,13 +146,13 @@ TEST(FilletFoundation, PositiveAlongThePathAndOutsideRangeFlag) {
   // theta_f for z = 17 is about 0.15 rad: outside the fitted range (physics.md 3.2).
   PinionSpec p = seed000();
   p.teeth = 17;
-  const MeshGeometry g = make_geometry(p);
+  const MeshGeometry g = fillet_geometry(p);
   EXPECT_TRUE(FilletFoundationCompliance(g, p).outside_fitted_range());
 }
 
 TEST(FilletFoundation, BoreErrors) {
   PinionSpec p = seed000();
-  const MeshGeometry g = make_geometry(p);
+  const MeshGeometry g = fillet_geometry(p);
   p.bore_radius = 0.0;
   EXPECT_THROW(FilletFoundationCompliance(g, p), InputError);
   p.bore_radius = g.pinion.root_radius;

@@ -16,6 +16,7 @@
 #include <numbers>
 #include <vector>
 
+#include "stiffness_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
@@ -24,9 +25,10 @@
 namespace rackopt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-double deg(double d) { return d * kPi / 180.0; }
-double inv(double a) { return std::tan(a) - a; }
+using test::deg;
+using test::inv;
+using test::kPi;
+using test::qags;
 
 // Hand-filled geometry from the physics.md 1 / 3.1 / 7.1 formulas (the
 // geometry module is not used so that these tests stand alone).
@@ -69,17 +71,6 @@ double s_lowest(const MeshGeometry& g) {
   return std::sqrt(r0 * r0 - std::pow(g.pinion.base_radius, 2));
 }
 
-double qags(const std::function<double(double)>& f, double a, double b) {
-  gsl_set_error_handler_off();
-  gsl_function F{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
-                 const_cast<std::function<double(double)>*>(&f)};
-  gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
-  double r = 0, e = 0;
-  gsl_integration_qags(&F, a, b, 0.0, 1e-12, 1000, w, &r, &e);
-  gsl_integration_workspace_free(w);
-  return r;
-}
-
 // Independent Cartesian evaluation (see file comment). include_segment: the
 // constant-thickness r_b sin(alpha_2) segment below the base circle.
 ToothCompliance cartesian(const MeshGeometry& g, const PinionSpec& p, double s, bool include_segment) {
@@ -105,14 +96,14 @@ ToothCompliance cartesian(const MeshGeometry& g, const PinionSpec& p, double s, 
   auto axial = [&](double y) { return std::pow(std::sin(a1), 2) / (E * 2 * half_thickness(y) * b); };
   ToothCompliance c;
   const double y_inv_root = rf > rb ? rf * std::cos(theta(rf)) : y_base;
-  c.bending = qags(bend, y_inv_root, yc);
-  c.shear = qags(shear, y_inv_root, yc);
-  c.axial = qags(axial, y_inv_root, yc);
+  c.bending = qags(bend, y_inv_root, yc, 1e-12);
+  c.shear = qags(shear, y_inv_root, yc, 1e-12);
+  c.axial = qags(axial, y_inv_root, yc, 1e-12);
   if (include_segment && rf < rb) {
     const double y_root = std::sqrt(rf * rf - h1 * h1);
-    c.bending += qags(bend, y_root, y_base);
-    c.shear += qags(shear, y_root, y_base);
-    c.axial += qags(axial, y_root, y_base);
+    c.bending += qags(bend, y_root, y_base, 1e-12);
+    c.shear += qags(shear, y_root, y_base, 1e-12);
+    c.axial += qags(axial, y_root, y_base, 1e-12);
   }
   return c;
 }
@@ -314,7 +305,7 @@ TEST(PinionToothSpall, PittedBandMatchesCartesianWithReducedSection) {
   };
   const double y_lo = r_lo * std::cos(theta(r_lo)), y_hi = r_hi * std::cos(theta(r_hi));
   const SpallBand band{r_lo, r_hi, ws, hs};
-  const double expected = qags(density_difference, y_lo, y_hi);
+  const double expected = qags(density_difference, y_lo, y_hi, 1e-12);
   EXPECT_GT(expected, 0.0);
   EXPECT_NEAR(tooth.at(s, &band).total() - tooth.at(s).total(), expected, 1e-7 * expected);
   // Fixed order 16 agrees with the adaptive reference.

@@ -12,14 +12,16 @@
 #include <functional>
 #include <numbers>
 
+#include "stiffness_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
 
 namespace rackopt {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-double deg(double d) { return d * kPi / 180.0; }
+using test::deg;
+using test::kPi;
+using test::qags;
 
 struct RackCase {
   MeshGeometry g;
@@ -42,17 +44,6 @@ RackCase make(double m, double a0, double x = 0.0, double clearance = 0.0) {
   s.rack.material.youngs_modulus = 206e9;
   s.rack.material.poisson_ratio = 0.29;
   return s;
-}
-
-double qags(const std::function<double(double)>& f, double a, double b) {
-  gsl_set_error_handler_off();
-  gsl_function F{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
-                 const_cast<std::function<double(double)>*>(&f)};
-  gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
-  double r = 0, e = 0;
-  gsl_integration_qags(&F, a, b, 0.0, 1e-13, 1000, w, &r, &e);
-  gsl_integration_workspace_free(w);
-  return r;
 }
 
 // Energies of the trapezoid by quadrature, optionally with a pit (ws, hs) in
@@ -85,9 +76,9 @@ ToothCompliance reference(const RackCase& s, double b, double yc, double ws = 0,
   for (auto [a, z] : {std::pair{0.0, std::min(lo, yc)}, std::pair{std::min(lo, yc), std::min(hi, yc)},
                       std::pair{std::min(hi, yc), yc}}) {
     if (z <= a) continue;
-    c.bending += qags(bend, a, z);
-    c.shear += qags(shear, a, z);
-    c.axial += qags(axial, a, z);
+    c.bending += qags(bend, a, z, 1e-13);
+    c.shear += qags(shear, a, z, 1e-13);
+    c.axial += qags(axial, a, z, 1e-13);
   }
   return c;
 }

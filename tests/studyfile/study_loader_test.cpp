@@ -8,11 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "studyfile_test_support.hpp"
+
 namespace rackopt::study {
 namespace {
 
 const std::string kSource = RACKOPT_SOURCE_DIR;
-const std::string kStudies = kSource + "/studies";
+using test::kStudies;
+using test::load;
 constexpr double kPi = 3.14159265358979323846;
 
 // "line:column" (1-based) of the first occurrence of `needle` in `text`, so
@@ -31,10 +34,6 @@ std::string position_of(const std::string& text, const std::string& needle, std:
     }
   }
   return std::to_string(line) + ":" + std::to_string(column);
-}
-
-StudySpec load(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  return load_study_text(text, "t.yaml", kStudies, overrides);
 }
 
 // Loads `text` expecting an InputError at file:line:column `where` whose key

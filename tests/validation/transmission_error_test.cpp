@@ -293,12 +293,13 @@ double te_for_amount(RackSpanModel body, double amount, bool period_mean) {
 }
 
 TEST(ProfileRelief, RackRailwayHasAnOptimalReliefInsideASensibleRange) {
-  struct Case {
+  struct ReliefSearch {
     RackSpanModel body;
     bool period_mean;
     double hi;
   };
-  for (const Case& k : {Case{RackSpanModel::kRigid, false, 100e-6}, Case{RackSpanModel::kCoupled, true, 300e-6}}) {
+  for (const ReliefSearch& k :
+       {ReliefSearch{RackSpanModel::kRigid, false, 100e-6}, ReliefSearch{RackSpanModel::kCoupled, true, 300e-6}}) {
     auto f = [&](double a) { return te_for_amount(k.body, a, k.period_mean); };
     const double g = 0.5 * (std::sqrt(5.0) - 1.0);
     double a = 0, b = k.hi, x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = f(x1), f2 = f(x2);

@@ -1,0 +1,36 @@
+// Small helpers several FE tests share (one definition, so the test files
+// can be compiled together in a unity build).
+#pragma once
+
+#include <sys/resource.h>
+
+#include <string>
+
+#include "rackopt/fe/mesh_position_fe.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+
+namespace rackopt::fe::testing {
+
+// The gantry axis as shipped (z 20, m 4 mm, 20 deg: the smallest shipped design).
+inline Drive gantry() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml"); }
+
+// Sum of the load shares of a position's pairs (1 when the pairs' contact
+// forces carry the whole load).
+inline double share_sum(const FePosition& p) {
+  double s = 0;
+  for (const FePair& q : p.pairs) s += q.load_share;
+  return s;
+}
+
+// CPU seconds of this process and its finished children (ccx) so far.
+inline double cpu_seconds() {
+  double t = 0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    getrusage(who, &u);
+    t += u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  }
+  return t;
+}
+
+}  // namespace rackopt::fe::testing
