@@ -9,7 +9,12 @@ set(_rackopt_long_tests
   "FeShapeAndExtendedContact.ShapeOfTheLoadedMeshAndANeighbourInExtendedContact" 45
   "MeshPositionFe.SmallDriveInvariantsAndTheAnalyticModel" 44
   "MeshPositionFe.AMissedLoadIsCorrectedByASecondRun" 22
-  "StudyAcceptance.RailwaySizingBeatsADenseGridAndRepeatsBitForBit" 17)
+  "StudyAcceptance.RailwaySizingBeatsADenseGridAndRepeatsBitForBit" 17
+  # Interrupted and resumed studies: about 30-60 s each under the sanitizers.
+  "RunCli.KillNineThenResumeLosesNothingAndRepeatsNothing" 30
+  "RunCli.ResumedRunReportsTheWarningsOfAnUninterruptedOne" 28
+  "RunCli.CtrlCStopsCleanlyWritesResultsAndResumeFinishes" 16
+  "OutputGuarantees.ProgressLineEndsDoneAndFitsTheTerminal" 9)
 list(LENGTH _rackopt_long_tests _n)
 math(EXPR _last "${_n} - 1")
 foreach(_i RANGE 0 ${_last} 2)
