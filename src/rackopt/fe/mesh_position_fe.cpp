@@ -10,6 +10,7 @@
 #include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
 #include "rackopt/fe/gmsh_library.hpp"
+#include "rackopt/fe/hertz_patch.hpp"
 #include "rackopt/fe/rack_span_fe.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/stiffness/hertz.hpp"
@@ -94,7 +95,7 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   for (const PairState& p : analytic.pairs) {
     const double per_width = drive.load.force * std::max(p.load_share, 0.1) / width;
     const double R = patch_curvature_radius(p.s, m);
-    b_hertz = std::min(b_hertz, std::sqrt(4 * per_width * R / (M_PI * e_star)));
+    b_hertz = std::min(b_hertz, hertz_half_width(per_width, R, e_star));
   }
   const double h_c = std::clamp(0.5 * b_hertz / std::pow(2.0, options.level), h / 64, h);
   const double far = 8 * h;
