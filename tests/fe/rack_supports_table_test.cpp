@@ -100,7 +100,7 @@ TEST(RackOnSupportsFe, DISABLED_SpanRackElementCounts) {
     const double X = fe_positions(model, 4).front();
     const double h = gear_element_size(d.pinion.module, 0), far = 8 * h;
     const double depth = fe_rack_body_depth(d, on);
-    const MeshPlacement pl = place_mesh(d, model, X, PlacementSpacing{2 * h, h / 4, 0.2, far / 2}, depth, false);
+    const MeshPlacement pl = place_mesh(d, model, X, PlacementSpacing{2 * h, h / 4, 0.2, far / 2}, depth, false, 1);
     const auto t0 = std::chrono::steady_clock::now();
     const SpanRackMesh r = mesh_span_rack(d, model.geometry(), pl, model.at(X).pairs.front().segment, depth, far,
                                           far / 2, {}, 0.1);

@@ -43,7 +43,29 @@ TEST(Hertz, WeberBanaschekMatchesTheSameMaterialFormula) {
   const double delta = 2 * F * (1 - nu * nu) / (std::numbers::pi * E * b) *
                        (std::log(2 * h1 / a) + std::log(2 * h2 / a) - nu / (1 - nu));
   const Material s = steel(E, nu);
-  EXPECT_NEAR(hertz_weber_banaschek_compliance(s, s, b, F, R, h1, h2), delta / F, 1e-12 * delta / F);
+  EXPECT_NEAR(hertz_weber_banaschek_compliance(s, s, b, F, R, h1, h2, ElasticPlane::kStrain), delta / F,
+              1e-12 * delta / F);
+}
+
+TEST(Hertz, WeberBanaschekPlaneStressIsThePlaneStrainLawWithTheEquivalentConstants) {
+  // A plane-strain solution turns into the plane-stress one under
+  // E -> E (1 + 2 nu)/(1 + nu)^2, nu -> nu/(1 + nu): the two forms must agree
+  // under that substitution, and plane stress (no lateral support) must be
+  // the more compliant of the two at the same E and nu.
+  const double E = 210e9, nu = 0.3, b = 0.05, F = 4e4, R = 0.05, h1 = 0.012, h2 = 0.015;
+  const Material s = steel(E, nu);
+  const Material equiv = steel(E * (1 + 2 * nu) / ((1 + nu) * (1 + nu)), nu / (1 + nu));
+  const double stress = hertz_weber_banaschek_compliance(s, s, b, F, R, h1, h2, ElasticPlane::kStress);
+  EXPECT_NEAR(hertz_weber_banaschek_compliance(equiv, equiv, b, F, R, h1, h2, ElasticPlane::kStrain), stress,
+              1e-12 * stress);
+  EXPECT_GT(stress, hertz_weber_banaschek_compliance(s, s, b, F, R, h1, h2, ElasticPlane::kStrain));
+  // Closed form of the plane-stress law, equal materials: E* = E/2.
+  const double a = std::sqrt(4 * F * R / (std::numbers::pi * b * E / 2));
+  const double delta = F / (std::numbers::pi * b * E) * (2 * std::log(2 * h1 / a) + 2 * std::log(2 * h2 / a) - 2 * nu);
+  EXPECT_NEAR(stress, delta / F, 1e-12 * delta / F);
+  // The secant falls with the force as ln F: doubling F takes 2 ln 2 /(pi b E)... per body, halved by the sqrt.
+  const double twice = hertz_weber_banaschek_compliance(s, s, b, 2 * F, R, h1, h2);
+  EXPECT_NEAR(stress - twice, 2 * std::log(2.0) / (std::numbers::pi * b * E), 1e-9 * stress);
 }
 
 TEST(Hertz, WeberBanaschekProperties) {

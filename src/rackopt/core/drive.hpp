@@ -126,7 +126,8 @@ enum class RackSpanModel {
 enum class HertzModel {
   kOff,             // rigid contact (for tests and comparisons)
   kLinear,          // k_h = pi b E*/2, load independent (Yang & Lin)
-  kWeberBanaschek,  // load- and curvature-dependent (physics.md 4.2)
+  kWeberBanaschek,  // load- and curvature-dependent, plane stress, between the tooth centre lines
+                    // (docs/models/contact.md); the default: within ~1 % of FE
 };
 
 // What is modelled. Each switch removes the corresponding computation when off.
@@ -135,7 +136,8 @@ struct Effects {
   bool root_segment = true;        // Chen & Shao straight segment when r_f < r_b
   bool fillet_foundation = true;   // Sainsot et al. 2004 pinion body compliance
   bool rack_tooth = true;          // trapezoid rack tooth bending + shear + axial
-  HertzModel hertz = HertzModel::kLinear;
+  bool rack_foundation = true;     // rack tooth foundation in its body, FE-calibrated (docs/models/rack_foundation.md)
+  HertzModel hertz = HertzModel::kWeberBanaschek;
   RackSpanModel rack_span = RackSpanModel::kCoupled;
   bool couple_term = true;         // couple e*F*cos(a0) of the axial force about the neutral axis
   bool body_axial = true;          // axial compliance of the rack body
@@ -147,7 +149,7 @@ struct Effects {
   // stiffness is infinite and the load sharing undefined, so a problem that
   // switches every one off is refused (docs/yaml.md, effects).
   bool any_compliance() const {
-    return pinion_tooth || fillet_foundation || rack_tooth || hertz != HertzModel::kOff ||
+    return pinion_tooth || fillet_foundation || rack_tooth || rack_foundation || hertz != HertzModel::kOff ||
            rack_span != RackSpanModel::kRigid;
   }
 };

@@ -158,7 +158,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
       c.share_analytic = p.load_share;
       c.pinion_analytic = p.pinion.total() + p.fillet;
       c.pinion_compared = pinion_contact_on_involute(model.geometry(), p.s);
-      c.rack_analytic = p.rack.total();
+      c.rack_analytic = p.rack.total() + p.rack_foundation;
       row.pairs.push_back(c);
     }
     out.rows.push_back(std::move(row));

@@ -340,4 +340,8 @@ Mesh2D mesh_rack_segment(const MeshGeometry& geometry, int teeth, double body_he
   return mesh_polygon_with_holes(o.outer, o.holes, coarse_size(grading, size, module), discs);
 }
 
+int rack_teeth_each_side(double body_depth, double pitch) {
+  return std::max(1, static_cast<int>(std::ceil(3 * body_depth / pitch)));
+}
+
 }  // namespace rackopt::fe

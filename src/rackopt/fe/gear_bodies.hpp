@@ -106,6 +106,16 @@ Mesh2D mesh_pinion_body(const PinionSpec& pinion, const MeshGeometry& geometry, 
 BodyOutline rack_segment_outline(const MeshGeometry& geometry, int teeth, double body_height,
                                  double root_radius = 0);
 
+// Teeth a rack segment carries on either side of its loaded teeth. The
+// segment's cut ends are free: a short segment on a deep body shears and
+// bends as a block under the load's component along the rack, which the
+// continuous rack does not. So the segment reaches 3 body depths beyond the
+// loaded teeth, at least one tooth: the compliance then moves by about 1e-3
+// with more (docs/models/fe_reference.md; 3 teeth on the gantry axis's 31 mm
+// body read 1.8 times the converged value). Used by the single-tooth and the
+// mesh-position solves alike, so that both see the same rack.
+int rack_teeth_each_side(double body_depth, double pitch);
+
 // rack_segment_outline meshed with quadratic triangles of
 // gear_element_size(module, level) (module = pitch / pi), graded as
 // `grading` says (a focus tooth outside 0..teeth-1 throws

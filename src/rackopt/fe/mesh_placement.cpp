@@ -99,7 +99,8 @@ bool inside_polygon(const Polygon2D& polygon, Point2 p) {
 }
 
 MeshPlacement place_mesh(const Drive& drive, const MeshStiffnessModel& model, double travel,
-                         const PlacementSpacing& spacing, double rack_body_depth, bool neighbours) {
+                         const PlacementSpacing& spacing, double rack_body_depth, bool neighbours,
+                         int rack_side_teeth) {
   if (!(spacing.outline > 0) || !(spacing.contact > 0) || spacing.contact > spacing.outline ||
       !(spacing.growth > 0) || !std::isfinite(spacing.outline)) {
     throw std::invalid_argument("place_mesh: spacings must be positive, contact <= outline, growth > 0");
@@ -132,8 +133,9 @@ MeshPlacement place_mesh(const Drive& drive, const MeshStiffnessModel& model, do
     j_lo = std::min(j_lo, p.rack_tooth);
     j_hi = std::max(j_hi, p.rack_tooth);
   }
-  out.first_rack_tooth = j_lo - 1;
-  out.rack_teeth = j_hi - j_lo + 3;
+  const int side_teeth = rack_side_teeth > 0 ? rack_side_teeth : rack_teeth_each_side(rack_body_depth, geo.rack.pitch);
+  out.first_rack_tooth = j_lo - side_teeth;
+  out.rack_teeth = j_hi - j_lo + 1 + 2 * side_teeth;
   const double pitch = geo.rack.pitch;
   const double offset = drive.rack.tooth_offset >= 0 ? drive.rack.tooth_offset : 0.5 * pitch;
   // Segment tooth k has its centre at (k + 1/2) p in the outline, at offset + (first + k) p here.

@@ -64,7 +64,10 @@ struct MeshPlacement {
 
 // Places the bodies of `drive` at travel X. `model` is the analytic model of
 // the same drive (its geometry and its pairs at X). The rack segment holds
-// every pair in mesh plus one tooth each side; its body is `rack_body_depth`
+// every pair in mesh plus `rack_side_teeth` teeth each side (0: as many as
+// rack_teeth_each_side in gear_bodies.hpp asks for, the free-ended segment
+// of a held rack; a rack whose span is drawn around the segment needs only
+// one); its body is `rack_body_depth`
 // deep below the root line (> 0), its root corners rounded by
 // drive.rack.root_radius as rack_segment_outline does. The pinion's bore is drive.pinion.bore_radius
 // (0: half the root radius, the loader's default). Each theoretical contact
@@ -73,7 +76,8 @@ struct MeshPlacement {
 // DesignError from the outlines, std::invalid_argument for bad spacings or a
 // non-positive depth, std::runtime_error when no pair is in mesh at X.
 MeshPlacement place_mesh(const Drive& drive, const MeshStiffnessModel& model, double travel,
-                         const PlacementSpacing& spacing, double rack_body_depth, bool neighbours);
+                         const PlacementSpacing& spacing, double rack_body_depth, bool neighbours,
+                         int rack_side_teeth = 0);
 
 // Distance from `p` to the polygon's boundary (its closed polyline) [m].
 double distance_to_polygon(const Polygon2D& polygon, Point2 p);

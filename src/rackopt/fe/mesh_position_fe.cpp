@@ -101,7 +101,8 @@ FePosition fe_mesh_position(const Drive& drive, double travel, const FeOptions& 
   const double far = 8 * h;
 
   const MeshPlacement pl =
-      place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2, far / 2}, depth, options.extended_contact);
+      place_mesh(drive, model, travel, PlacementSpacing{2 * h, h_c, 0.2, far / 2}, depth, options.extended_contact,
+                 options.rack_on_supports ? 1 : 0);
   if (options.rack_on_supports) {  // a position too near a hinge is refused before ccx is looked for
     (void)rack_span_outline(drive, geo, pl, segment_of(analytic), depth, tuning.hinge_patch_fraction * depth, far / 2);
   }

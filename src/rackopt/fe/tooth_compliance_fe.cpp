@@ -15,6 +15,7 @@
 #include "rackopt/geometry/pinion_generation.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
 
@@ -25,16 +26,6 @@ namespace {
 // module): the module at level 0. Against 4 x the size this moves the
 // railway pinion's compliance by 1e-4 (docs/models/fe_reference.md).
 constexpr double kCoarseFactor = 6;
-
-// The rack segment's cut ends are free: a short segment on a deep body
-// shears and bends as a block under the load's component along the rack,
-// which the continuous rack does not. Teeth on either side of the loaded one
-// until the segment reaches 3 body depths beyond it: the compliance then
-// moves by about 1e-3 with more (measured in docs/models/fe_reference.md;
-// 3 teeth on the gantry axis's 31 mm body read 1.8 times the converged value).
-int rack_teeth_each_side(double body_depth, double pitch) {
-  return std::max(1, static_cast<int>(std::ceil(3 * body_depth / pitch)));
-}
 
 std::string mm(double v) {
   std::ostringstream o;
@@ -85,17 +76,10 @@ double patch_curvature_radius(double s, double module) { return std::max(s, 0.1 
 
 double analytic_tooth_compliance(const Drive& drive, ToothMember member, double s) {
   const MeshGeometry g = build_mesh_geometry(drive);
-  if (member == ToothMember::kPinion) {
-    double c = 0;
-    if (drive.effects.pinion_tooth) {
-      c += PinionToothCompliance(g, drive.pinion, drive.effects, drive.numerics).at(s).total();
-    }
-    if (drive.effects.fillet_foundation) c += FilletFoundationCompliance(g, drive.pinion).at(s, drive.pinion.face_width);
-    return c;
-  }
-  return RackToothCompliance(g, drive.rack, rack_face_width(drive), drive.numerics, drive.effects.rack_tooth)
-      .at(s)
-      .total();
+  // The fillet foundation at the pinion's own face width, as the FE pinion is loaded.
+  const PairTeeth t = PairCompliance(drive, g).teeth(s, nullptr, nullptr, drive.pinion.face_width);
+  if (member == ToothMember::kPinion) return t.pinion.total() + t.fillet;
+  return t.rack.total() + t.rack_foundation;
 }
 
 ToothComplianceFe fe_tooth_compliance(const Drive& drive, ToothMember member, double s, const FeOptions& options) {

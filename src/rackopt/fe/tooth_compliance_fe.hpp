@@ -77,13 +77,15 @@ double patch_curvature_radius(double s, double module);
 // definition (m/N, whole face width): pinion = tooth bending + shear + axial
 // (PinionToothCompliance) + fillet foundation (FilletFoundationCompliance,
 // the pinion's face width); rack = tooth bending + shear + axial
-// (RackToothCompliance, the rack's face width). The drive's effects switch
-// the parts; spalls are not applied (the FE bodies are intact). Both beam
-// models give the displacement of the tooth's centre-line section under the
-// load along the load; the foundation model's u_f is the same crossing of
-// the load line with the centre line. Not included: Hertz flattening (the
-// FE reads away from the patch) and, for the rack, its body (the analytic
-// rack tooth is clamped on the root line). Throws as the stiffness models do.
+// (RackToothCompliance, the rack's face width) + the rack foundation
+// (RackFoundationCompliance: the body under the tooth, calibrated on this
+// very FE definition with the base held at the body depth). All from
+// PairCompliance; the drive's effects switch the parts; spalls are not
+// applied (the FE bodies are intact). The beam models give the displacement
+// of the tooth's centre-line section under the load along the load; the
+// foundation models use the same crossing of the load line with the centre
+// line. Not included: the local contact term (the FE reads away from the
+// patch). Throws as the stiffness models do.
 double analytic_tooth_compliance(const Drive& drive, ToothMember member, double s);
 
 }  // namespace rackopt::fe

@@ -62,17 +62,16 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
                                                               : "per pair (seed 000)";
   const char* hertz = e.hertz == HertzModel::kOff      ? "off"
                       : e.hertz == HertzModel::kLinear ? "linear"
-                                                       : "Weber-Banaschek (load dependent)";
+                                                       : "Weber-Banaschek (load dependent, plane stress)";
   o << "  effects: pinion tooth " << onoff(e.pinion_tooth) << " (root segment " << onoff(e.root_segment)
     << "), fillet foundation " << onoff(e.fillet_foundation) << ", rack tooth " << onoff(e.rack_tooth)
-    << ", Hertz " << hertz << ",\n           rack span " << span;
+    << " (foundation " << onoff(e.rack_foundation) << "), contact " << hertz << ",\n           rack span " << span;
   if (e.rack_span != RackSpanModel::kRigid) {
     o << " [couple " << onoff(e.couple_term) << ", axial " << onoff(e.body_axial) << ", shear "
       << onoff(e.body_shear) << "]";
   }
   o << ", interference limit " << onoff(e.interference_limit) << ", spalls "
-    << (e.spalling ? std::to_string(d.spalls.size()) : std::string("off"))
-    << "\n           (rack root foundation not modelled: physics.md 5.4 option 2)\n";
+    << (e.spalling ? std::to_string(d.spalls.size()) : std::string("off")) << "\n";
   for (const std::string& w : g.warnings) o << "  warning: " << w << "\n";
   return o.str();
 }
@@ -106,7 +105,8 @@ std::string stiffness_csv(const StiffnessCurve& c) {
   static const char* kPairCols[] = {"in_mesh",         "rack_tooth",     "pinion_tooth",   "s_m",
                                     "x_m",             "load_share",     "c_pinion_bending", "c_pinion_shear",
                                     "c_pinion_axial",  "c_fillet",       "c_hertz",        "c_rack_bending",
-                                    "c_rack_shear",    "c_rack_axial",   "c_body",         "relief_m"};
+                                    "c_rack_shear",    "c_rack_axial",   "c_rack_foundation", "c_body",
+                                    "relief_m"};
   for (int q = 0; q < c.max_pairs; ++q) {
     for (const char* col : kPairCols) out += ",pair" + std::to_string(q) + "_" + col;
   }
@@ -146,6 +146,7 @@ std::string stiffness_csv(const StiffnessCurve& c) {
       num(p->rack.bending);
       num(p->rack.shear);
       num(p->rack.axial);
+      num(p->rack_foundation);
       num(p->body);
       num(p->relief);
     }

@@ -19,9 +19,10 @@ void check_material(const Material& m) {
   }
 }
 
-// Approach of one body's centre line [m per N/(pi b)] (Weber & Banaschek).
-double body_term(const Material& m, double h, double a) {
+// Approach of one body's point at distance h [m per N/(pi b)] (Weber & Banaschek).
+double body_term(const Material& m, double h, double a, ElasticPlane plane) {
   const double nu = m.poisson_ratio;
+  if (plane == ElasticPlane::kStress) return (2.0 * std::log(2.0 * h / a) - nu) / m.youngs_modulus;
   return (1.0 - nu * nu) / m.youngs_modulus * (2.0 * std::log(2.0 * h / a) - nu / (1.0 - nu));
 }
 
@@ -44,8 +45,11 @@ double hertz_linear_compliance(double e_star, double face_width) {
 
 double hertz_weber_banaschek_compliance(const Material& a, const Material& b, double face_width,
                                         double force, double effective_radius, double h1,
-                                        double h2) {
-  const double e_star = effective_modulus(a, b);
+                                        double h2, ElasticPlane plane) {
+  const double e_star_strain = effective_modulus(a, b);  // also checks both materials
+  const double e_star = plane == ElasticPlane::kStrain
+                            ? e_star_strain
+                            : 1.0 / (1.0 / a.youngs_modulus + 1.0 / b.youngs_modulus);
   if (!(face_width > 0.0) || !(effective_radius > 0.0) || !(h1 > 0.0) || !(h2 > 0.0) ||
       !std::isfinite(force)) {
     throw InputError({}, "hertz",
@@ -54,7 +58,7 @@ double hertz_weber_banaschek_compliance(const Material& a, const Material& b, do
   const double f = std::max(force, 1.0 * face_width);  // floor: 1 N/m of face width
   const double half_width =
       std::sqrt(4.0 * f * effective_radius / (std::numbers::pi * face_width * e_star));
-  const double bracket = body_term(a, h1, half_width) + body_term(b, h2, half_width);
+  const double bracket = body_term(a, h1, half_width, plane) + body_term(b, h2, half_width, plane);
   if (!(bracket > 0.0)) {
     throw DesignError("hertz_out_of_range",
                       "Weber-Banaschek contact half-width " + std::to_string(half_width * 1e3) +

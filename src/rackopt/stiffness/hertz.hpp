@@ -14,21 +14,32 @@ double effective_modulus(const Material& a, const Material& b);
 // E* <= 0.
 double hertz_linear_compliance(double e_star, double face_width);
 
-// Weber & Banaschek (1953), physics.md 4.2, generalised to two materials by
-// summing the per-body approaches:
-//   delta = F/(pi b) sum_i (1-nu_i^2)/E_i [2 ln(2 h_i / a) - nu_i/(1-nu_i)],
-//   a = sqrt(4 F R'/(pi b E*)),
-// which for equal materials is 2F(1-nu^2)/(pi E b)[ln(2h1/a) + ln(2h2/a) - nu/(1-nu)].
+// The 2-D state the local contact term is written in. The tooth beams use
+// E and G, i.e. plane stress, and so does the FE reference, so the mesh
+// model uses plane stress; plane strain (a face much wider than the
+// teeth are thick, no lateral expansion) is kept for comparison.
+enum class ElasticPlane { kStress, kStrain };
+
+// Local contact term of Weber & Banaschek (1953) (docs/models/contact.md),
+// generalised to two materials by summing the per-body approaches: the
+// approach of the two bodies' points at distances h1, h2 from the contact
+// along the load line (where the tooth beams' deflections are taken: the
+// tooth centre lines), per unit force.
+//   plane stress: delta = F/(pi b) sum_i [2 ln(2 h_i / a) - nu_i] / E_i,
+//                 a = sqrt(4 F R'/(pi b E*)), 1/E* = 1/E1 + 1/E2;
+//   plane strain: delta = F/(pi b) sum_i (1-nu_i^2)/E_i [2 ln(2 h_i / a) - nu_i/(1-nu_i)],
+//                 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2.
 // Returns the secant compliance delta/F [m/N] for the pair force `force` [N],
-// effective radius R' [m] (= s for a rack-pinion contact) and distances h1, h2
-// [m] from the contact to the two tooth centre lines (about the half tooth
-// thicknesses at the contact). The force is floored at 1 N per metre of face
-// width (so force <= 0 returns the value at that tiny reference load: the
-// compliance grows only logarithmically as F -> 0, and 0 would give infinity).
+// effective radius R' [m] (= s for a rack-pinion contact) and distances h1,
+// h2 [m]. It falls logarithmically with the force (the strip widens). The
+// force is floored at 1 N per metre of face width (so force <= 0 returns the
+// value at that tiny reference load: the compliance grows only
+// logarithmically as F -> 0, and 0 would give infinity).
 // Throws InputError for b, R', h1 or h2 <= 0; DesignError
 // "hertz_out_of_range" when the contact half-width is so large that the
 // bracket is not positive (a > ~2h: outside the model).
 double hertz_weber_banaschek_compliance(const Material& a, const Material& b, double face_width,
-                                        double force, double effective_radius, double h1, double h2);
+                                        double force, double effective_radius, double h1, double h2,
+                                        ElasticPlane plane = ElasticPlane::kStress);
 
 }  // namespace rackopt

@@ -12,9 +12,8 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/curve_numerics.hpp"
-#include "rackopt/stiffness/fillet_foundation.hpp"
-#include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/loaded_contact.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
 #include "rackopt/stiffness/profile_relief.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
@@ -32,12 +31,10 @@ struct MappedSpall {
   double width = 0;
 };
 
-// Tooth-level compliance of one pair without the Hertz term (which depends on
-// the effective width and, for Weber-Banaschek, on the pair force).
+// Tooth-level compliance of one pair without the contact term (which
+// depends on the effective width and, for Weber-Banaschek, on the pair force).
 struct LocalParts {
-  ToothCompliance pinion;
-  double fillet = 0;
-  ToothCompliance rack;
+  PairTeeth teeth;
   double face_width = 0;  // effective contact width (reduced inside a spall)
   bool spalled = false;
 };
@@ -62,6 +59,16 @@ using LocalCache = std::unordered_map<CacheKey, LocalParts, CacheKeyHash>;
 
 int floor_div_int(double v) { return static_cast<int>(std::floor(v)); }
 
+// A drive built in code skips the loader's check: a rigid mesh has no finite
+// stiffness, so refuse it rather than return inf.
+const Drive& checked(const Drive& drive) {
+  if (!drive.effects.any_compliance()) {
+    throw InputError(SourceMark{drive.source_file.empty() ? "<drive>" : drive.source_file, 0, 0}, "effects",
+                     "every compliance is switched off: the mesh would be rigid (infinite stiffness)");
+  }
+  return drive;
+}
+
 }  // namespace
 
 struct MeshStiffnessModel::Impl {
@@ -69,9 +76,7 @@ struct MeshStiffnessModel::Impl {
   MeshGeometry geo;
   std::vector<std::string> warnings;
 
-  std::optional<PinionToothCompliance> pinion_tooth;
-  std::optional<FilletFoundationCompliance> fillet;
-  std::optional<RackToothCompliance> rack_tooth;
+  PairCompliance pair;
   std::optional<RackSpanCompliance> span_model;
   std::optional<ReliefOnPath> relief;  // only when the drive has a profile relief
 
@@ -80,21 +85,15 @@ struct MeshStiffnessModel::Impl {
   double A0 = 0;       // s of the pair on rack tooth 0 at X = 0
   double span = 0;
   double contact_width = 0;
-  double e_star = 0;
   double neutral_axis_depth = 0;
   int z = 0;
   int slots = 1;
   std::vector<MappedSpall> spalls;
 
-  explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)) {
+  explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)), pair(checked(d), geo) {
     warnings = geo.warnings;
+    warnings.insert(warnings.end(), pair.warnings().begin(), pair.warnings().end());
     const Effects& fx = drive.effects;
-    // A drive built in code skips the loader's check: a rigid mesh has no
-    // finite stiffness, so refuse it rather than return inf.
-    if (!fx.any_compliance()) {
-      throw InputError(SourceMark{drive.source_file.empty() ? "<drive>" : drive.source_file, 0, 0}, "effects",
-                       "every compliance is switched off: the mesh would be rigid (infinite stiffness)");
-    }
     a0 = drive.pinion.pressure_angle;
     ca = std::cos(a0);
     sa = std::sin(a0);
@@ -105,9 +104,7 @@ struct MeshStiffnessModel::Impl {
     s_end = geo.path.s_end;
     span = drive.rack.span;
     z = drive.pinion.teeth;
-    const double b_rack = drive.rack.face_width > 0 ? drive.rack.face_width : drive.pinion.face_width;
-    contact_width = std::min(drive.pinion.face_width, b_rack);
-    e_star = effective_modulus(drive.pinion.material, drive.rack.material);
+    contact_width = pair.contact_width();
     neutral_axis_depth = drive.rack.section.neutral_axis_depth;
     slots = static_cast<int>(std::floor(geo.path.contact_ratio)) + 1;
 
@@ -118,18 +115,6 @@ struct MeshStiffnessModel::Impl {
     const double shift = drive.pinion.profile_shift * drive.pinion.module + drive.mounting.clearance;
     A0 = ca * (offset - 0.25 * pitch + shift * std::tan(a0)) + s_p;
 
-    if (fx.pinion_tooth) pinion_tooth.emplace(geo, drive.pinion, fx, drive.numerics);
-    if (fx.fillet_foundation) {
-      fillet.emplace(geo, drive.pinion);
-      if (fillet->outside_fitted_range()) {
-        std::ostringstream w;
-        w << "fillet foundation: (h_f, theta_f) = (" << fillet->h_f() << ", " << fillet->theta_f()
-          << " rad) is outside the fitted range of Sainsot's table (1.4..7, 0.01..0.12 rad); "
-             "extrapolated";
-        warnings.push_back(w.str());
-      }
-    }
-    if (fx.rack_tooth) rack_tooth.emplace(geo, drive.rack, b_rack, drive.numerics);
     if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(drive.rack, a0, fx);
     if (fx.spalling) map_spalls();
     if (ReliefOnPath r(drive, geo); r.any()) relief.emplace(r);
@@ -194,11 +179,11 @@ struct MeshStiffnessModel::Impl {
       spalls.push_back(m);
       // Let the tooth models check depth against the local thickness now,
       // rather than in the middle of a curve.
-      if (m.member == Member::kPinion && pinion_tooth) {
-        (void)pinion_tooth->at(s_end, &spalls.back().band);
+      if (m.member == Member::kPinion && pair.pinion_tooth()) {
+        (void)pair.pinion_tooth()->at(s_end, &spalls.back().band);
       }
-      if (m.member == Member::kRack && rack_tooth) {
-        (void)rack_tooth->at(s_start, &spalls.back().band);
+      if (m.member == Member::kRack && pair.rack_tooth()) {
+        (void)pair.rack_tooth()->at(s_start, &spalls.back().band);
       }
     }
   }
@@ -229,20 +214,11 @@ struct MeshStiffnessModel::Impl {
     if (rs && s >= rs->s_lo && s <= rs->s_hi) lost_width = std::max(lost_width, rs->width);
     out.face_width = contact_width - lost_width;
     out.spalled = lost_width > 0;
-    if (pinion_tooth) {
-      out.pinion = pinion_tooth->at(s, ps ? &ps->band : nullptr);
-      if (ps) {
-        const ToothCompliance healthy = pinion_tooth->at(s, nullptr);
-        out.spalled = out.spalled || healthy.total() != out.pinion.total();
-      }
-    }
-    if (fillet) out.fillet = fillet->at(s, out.face_width);
-    if (rack_tooth) {
-      out.rack = rack_tooth->at(s, rs ? &rs->band : nullptr);
-      if (rs) {
-        const ToothCompliance healthy = rack_tooth->at(s, nullptr);
-        out.spalled = out.spalled || healthy.total() != out.rack.total();
-      }
+    out.teeth = pair.teeth(s, ps ? &ps->band : nullptr, rs ? &rs->band : nullptr, out.face_width);
+    if ((ps || rs) && !out.spalled) {
+      const PairTeeth healthy = pair.teeth(s, nullptr, nullptr, out.face_width);
+      out.spalled = healthy.pinion.total() != out.teeth.pinion.total() ||
+                    healthy.rack.total() != out.teeth.rack.total();
     }
     return out;
   }
@@ -259,26 +235,7 @@ struct MeshStiffnessModel::Impl {
   }
 
   double hertz_compliance(const PairState& p, double face_width, double force) const {
-    switch (drive.effects.hertz) {
-      case HertzModel::kOff:
-        return 0.0;
-      case HertzModel::kLinear:
-        return hertz_linear_compliance(e_star, face_width);
-      case HertzModel::kWeberBanaschek: {
-        // Distances from the contact to the tooth centre lines: the pinion
-        // half thickness h of physics.md 2.1 and the rack half thickness.
-        const double rb = geo.pinion.base_radius;
-        const double alpha2 = geo.pinion.half_base_angle;
-        const double s_eff = std::max(p.s, 1e-6 * rb);
-        const double alpha1 = s_eff / rb - alpha2;
-        const double h1 = rb * ((alpha1 + alpha2) * std::cos(alpha1) - std::sin(alpha1));
-        const double h2 = geo.rack.half_thickness_at_datum -
-                          geo.contact_height_above_datum(p.s) * std::tan(a0);
-        return hertz_weber_banaschek_compliance(drive.pinion.material, drive.rack.material, face_width,
-                                                force, s_eff, std::max(h1, 1e-9), std::max(h2, 1e-9));
-      }
-    }
-    return 0.0;
+    return pair.contact(p.s, force, face_width);
   }
 
   // s of the pair on rack tooth j at travel X.
@@ -310,16 +267,17 @@ struct MeshStiffnessModel::Impl {
       p.a = std::clamp(p.x - p.segment * span, 0.0, span);
       p.e = neutral_axis_depth + geo.rack.dedendum + geo.contact_height_above_datum(p.s);
       const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
-      p.pinion = lp.pinion;
-      p.fillet = lp.fillet;
-      p.rack = lp.rack;
+      p.pinion = lp.teeth.pinion;
+      p.fillet = lp.teeth.fillet;
+      p.rack = lp.teeth.rack;
+      p.rack_foundation = lp.teeth.rack_foundation;
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
       p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
       st.pairs.push_back(p);
     }
     solve(st);
-    if (drive.effects.hertz == HertzModel::kWeberBanaschek && st.pairs.size() > 1) {
+    if (pair.contact_depends_on_force() && st.pairs.size() > 1) {
       // The Hertz term depends on each pair's force: fixed-point iteration on
       // the load shares (monotone, converges in a few steps).
       for (int it = 0; it < 30; ++it) {

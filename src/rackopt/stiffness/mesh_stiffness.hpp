@@ -1,6 +1,7 @@
 // Time-varying mesh stiffness of a rack drive over the travel along one rack
 // span: the pairs in mesh at each position, each pair's local compliance
-// (pinion tooth, fillet foundation, Hertz, rack tooth), the rack body shared by
+// (pair_compliance.hpp: pinion tooth, fillet foundation, contact, rack tooth
+// and its foundation), the rack body shared by
 // all pairs through one flexibility matrix, the mesh stiffness and each pair's
 // load share (physics.md 6.3, 7.2).
 //
@@ -35,10 +36,11 @@ struct PairState {
   double fillet = 0;
   double hertz = 0;
   ToothCompliance rack;
+  double rack_foundation = 0;  // the rack tooth's foundation in its body
   double body = 0;       // diagonal of the body flexibility matrix (own load on own contact)
   bool spalled = false;  // a spall changes this pair at this position
   double relief = 0;     // profile relief at this contact: gap to close before it carries load [m]
-  double local() const { return pinion.total() + fillet + hertz + rack.total(); }
+  double local() const { return pinion.total() + fillet + hertz + rack.total() + rack_foundation; }
   // f_j / F under load.force. Contact is unilateral: 0 when the rack body
   // carries this contact away from the pinion faster than the common
   // approach (the pair opens), or when its relief is not closed.

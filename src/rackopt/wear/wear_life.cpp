@@ -9,10 +9,8 @@
 #include <sstream>
 
 #include "rackopt/core/error.hpp"
-#include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
-#include "rackopt/stiffness/pinion_tooth.hpp"
-#include "rackopt/stiffness/rack_tooth.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/wear/contact.hpp"
 #include "rackopt/wear/hardness.hpp"
 
@@ -177,6 +175,7 @@ struct WearModel::Impl {
   std::vector<double> cp;
   double cr_dy = 0;
   std::vector<double> cr;
+  std::optional<PairCompliance> pair;
 
   std::array<HardnessModel, 2> hardness;
   std::array<HardnessIntegral, 2> G;
@@ -253,38 +252,29 @@ struct WearModel::Impl {
       }
       G[mb] = HardnessIntegral(hardness[mb], limit[mb]);
     }
-    if (drive.effects.hertz == HertzModel::kWeberBanaschek) {
-      warnings.push_back(
-          "wear: load sharing uses the linear Hertz compliance (Weber-Banaschek is load dependent; "
-          "its share of the pair compliance is ~10%)");
-    }
   }
 
+  // Tooth compliance tables (rigid rack body) from the pair model the mesh
+  // model uses too: pinion tooth + fillet foundation against s, rack tooth
+  // + its foundation against the contact height above the rack root line
+  // (the clearance moves the rack). The contact term is added per node in
+  // make_path, at the node's pair force.
   void build_compliance_tables(double b_rack) {
-    const Effects& fx = drive.effects;
-    std::optional<PinionToothCompliance> pt;
-    std::optional<FilletFoundationCompliance> ff;
-    if (fx.pinion_tooth) pt.emplace(geo, drive.pinion, fx, drive.numerics);
-    if (fx.fillet_foundation) ff.emplace(geo, drive.pinion);
-    const double ch = fx.hertz == HertzModel::kOff ? 0.0 : hertz_linear_compliance(e_star, b);
+    (void)b_rack;
+    pair.emplace(drive, geo);
     const int n = 512;
     cp_lo = std::min(s_lo, s_start_nom);
     cp_ds = (s_end - cp_lo) / n;
     cp.resize(n + 1);
+    cr.assign(n + 1, 0.0);
+    cr_dy = rack_height / n;
     for (int k = 0; k <= n; ++k) {
       // The top node is evaluated exactly at s_end (the tooth model rejects
       // radii beyond the tip, and rounding could put k*ds past it).
       const double s = k == n ? s_end : cp_lo + k * cp_ds;
-      double c = ch;
-      if (pt) c += pt->at(s).total();
-      if (ff) c += ff->at(s, b);
-      cp[k] = c;
-    }
-    cr.assign(n + 1, 0.0);
-    cr_dy = rack_height / n;
-    if (fx.rack_tooth) {
-      const RackToothCompliance rt(geo, drive.rack, b_rack, drive.numerics);
-      for (int k = 0; k <= n; ++k) cr[k] = rt.at_height(k * cr_dy).total();
+      const PairTeeth t = pair->teeth_at(s, k * cr_dy, b);
+      cp[k] = t.pinion.total() + t.fillet;
+      cr[k] = t.rack.total() + t.rack_foundation;
     }
   }
 
@@ -297,11 +287,41 @@ struct WearModel::Impl {
     return t[k] + f * (t[k + 1] - t[k]);
   }
 
-  // Local pair compliance at LOA coordinate s for a rack datum at `clearance`.
-  double pair_compliance(double s, double clearance) const {
-    const double height_above_root =
-        rack_dedendum + r * sa * sa - s * sa + drive.pinion.profile_shift * drive.pinion.module + clearance;
-    return lerp_table(cp, cp_lo, cp_ds, s) + lerp_table(cr, 0.0, cr_dy, height_above_root);
+  double rack_height_at(double s, double clearance) const {
+    return rack_dedendum + r * sa * sa - s * sa + drive.pinion.profile_shift * drive.pinion.module + clearance;
+  }
+  // Tooth compliance of the pair at LOA coordinate s for a rack datum at
+  // `clearance` (no contact term).
+  double teeth_compliance(double s, double clearance) const {
+    return lerp_table(cp, cp_lo, cp_ds, s) + lerp_table(cr, 0.0, cr_dy, rack_height_at(s, clearance));
+  }
+  // The local pair compliances of the pairs in mesh at one position (nodes
+  // c[0..n)), the contact term at each pair's force under the unworn load
+  // sharing (rigid rack body, pairs in parallel). A force-dependent contact
+  // term makes that a fixed point: the term moves with ln(force), so each
+  // step shrinks the error by a small factor and a few steps from equal
+  // shares settle it. As the flanks wear the shares move, and the contact
+  // term with them only through that logarithm: it is kept at its unworn value.
+  void position_compliances(const double* c, int n, double clearance, double* out) const {
+    std::array<double, 16> teeth{};
+    if (n > static_cast<int>(teeth.size())) throw std::runtime_error("wear: more than 16 pairs in mesh");
+    for (int j = 0; j < n; ++j) {
+      teeth[j] = teeth_compliance(c[j], clearance);
+      out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
+    }
+    if (!pair->contact_depends_on_force() || n == 1) return;
+    for (int it = 0; it < 8; ++it) {
+      double k = 0;
+      for (int j = 0; j < n; ++j) k += 1.0 / out[j];
+      double change = 0;
+      for (int j = 0; j < n; ++j) {
+        const double fj = force * (1.0 / out[j]) / k;
+        const double cj = teeth[j] + pair->contact(c[j], fj, b, rack_height_at(c[j], clearance));
+        change = std::max(change, std::abs(cj - out[j]) / cj);
+        out[j] = cj;
+      }
+      if (change < 1e-9) break;
+    }
   }
 
   // ---------------------------------------------------------------- path --
@@ -339,8 +359,10 @@ struct WearModel::Impl {
           double c = s_start + phi + j * pb;
           if (c > s_end - 1e-9 * pb) c = s_end;
           p.node_c.push_back(c);
-          p.node_comp.push_back(pair_compliance(c, clearance));
         }
+        p.node_comp.resize(p.node_c.size());
+        const int a = p.pos_begin.back();
+        position_compliances(&p.node_c[a], pc.pairs, clearance, &p.node_comp[a]);
         p.pos_begin.push_back(static_cast<int>(p.node_c.size()));
       }
       for (int j = 0; j < pc.pairs; ++j) {

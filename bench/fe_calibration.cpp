@@ -1,0 +1,504 @@
+// FE reference data the analytic stiffness model is calibrated and checked
+// against: single-tooth compliances of the rack and of the pinion over a
+// design sample, and mesh positions in the single-pair zone (the local
+// contact term is what is left of the pair's FE compliance once both FE
+// tooth compliances are taken off). Writes CSV files with their provenance
+// in '#' lines; tests/data/fe/ holds the committed ones and their README
+// says how they were made (docs/models/fe_calibration.md).
+//
+//   ./build/fe_calibration --set rack|pinion|contact --out FILE
+//                          [--threads T] [--level L] [--limit N]
+//   ./build/fe_calibration --fit rack FILE
+//
+// --fit rack: the least-squares fit of the rack foundation law
+// (stiffness/rack_foundation.hpp) to a rack data file, printed as the
+// coefficient rows of rack_foundation.cpp, with the residuals before and
+// after and the fit on each base tooth form predicting the other.
+//
+// Rows are appended to FILE.partial as the solves finish, so an interrupted
+// run resumes where it stopped; the finished file is sorted by key and
+// renamed to FILE. Every row is one FE solve (or, for contact, one mesh
+// position with its two single-tooth solves) on a variant of a shipped
+// problem, given by --set-style overrides in the `design` column.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/fe/mesh_position_fe.hpp"
+#include "rackopt/fe/tooth_compliance_fe.hpp"
+#include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/hertz.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+
+namespace {
+
+using namespace rackopt;
+using namespace rackopt::fe;
+
+struct Args {
+  std::string set;
+  std::string fit;  // --fit: the data set to fit
+  std::string fit_file;
+  std::string out;
+  int threads = 1;
+  int level = 0;
+  int limit = 0;  // 0: every job
+};
+
+struct Job {
+  std::string key;        // unique: problem|overrides|position
+  std::string problem;    // name in problems/
+  std::vector<std::string> overrides;
+  double fraction = 0;    // position along the path of contact (0 = start, 1 = end), or of the single-pair zone
+};
+
+std::string problem_path(const std::string& name) {
+  return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml";
+}
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string out;
+  for (const std::string& s : v) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+std::string fmt(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.7g", v);
+  return buf;
+}
+
+Drive job_drive(const Job& j) {
+  Drive d = load_problem(problem_path(j.problem), j.overrides);
+  d.effects.rack_span = RackSpanModel::kRigid;
+  d.spalls.clear();
+  d.pinion.tip_relief = {};
+  d.pinion.root_relief = {};
+  d.rack.tip_relief = {};
+  d.rack.root_relief = {};
+  return d;
+}
+
+// The sample. Tooth compliance scales with 1/(E b) and is otherwise a
+// function of the tooth shape in module units, so the sample varies shapes
+// (pressure angle, tooth form, body depth, root round; teeth and profile
+// shift for the pinion) at one module per base problem.
+std::vector<Job> rack_jobs() {
+  std::vector<Job> jobs;
+  const std::vector<std::string> bases = {"rack_railway", "gantry_axis"};
+  for (const std::string& base : bases) {
+    const Drive d0 = load_problem(problem_path(base));
+    const double m = d0.pinion.module;
+    for (double alpha : {14.0, 20.0, 25.0}) {
+      for (double depth : {1.5, 3.0, 6.0}) {
+        for (double rho : {0.1, 0.3}) {
+          std::vector<std::string> ov = {"pinion.pressure_angle=" + fmt(alpha) + " deg",
+                                         "rack.body_height=" + fmt(depth * m * 1e3) + " mm",
+                                         "rack.root_radius=" + fmt(rho * m * 1e3) + " mm",
+                                         "effects.interference_limit=off"};
+          for (double f : {0.05, 0.35, 0.65, 0.95}) {
+            jobs.push_back({base + "|" + join(ov, ";") + "|" + fmt(f), base, ov, f});
+          }
+        }
+      }
+    }
+  }
+  return jobs;
+}
+
+std::vector<Job> pinion_jobs() {
+  std::vector<Job> jobs;
+  for (int z : {12, 18, 26, 40}) {
+    for (double x : {-0.3, 0.0, 0.5}) {
+      for (double alpha : {14.0, 20.0, 25.0}) {
+        std::vector<std::string> ov = {"pinion.teeth=" + std::to_string(z), "pinion.profile_shift=" + fmt(x),
+                                       "pinion.pressure_angle=" + fmt(alpha) + " deg"};
+        for (double f : {0.05, 0.35, 0.65, 0.95}) {
+          jobs.push_back({"gantry_axis|" + join(ov, ";") + "|" + fmt(f), "gantry_axis", ov, f});
+        }
+      }
+    }
+  }
+  return jobs;
+}
+
+std::vector<Job> contact_jobs() {
+  std::vector<Job> jobs;
+  for (const char* p : {"gantry_axis", "large_module", "rack_railway", "ship_lift"}) {
+    jobs.push_back({std::string(p) + "||0.5", p, {}, 0.5});
+  }
+  // A spread: pressure angle, teeth and shift on the gantry axis.
+  const std::vector<std::vector<std::string>> spread = {
+      {"pinion.pressure_angle=14 deg", "pinion.teeth=30"},
+      {"pinion.pressure_angle=25 deg"},
+      {"pinion.teeth=14", "pinion.profile_shift=0.4"},
+      {"pinion.teeth=40", "pinion.profile_shift=-0.2"},
+  };
+  for (const auto& ov : spread) jobs.push_back({"gantry_axis|" + join(ov, ";") + "|0.5", "gantry_axis", ov, 0.5});
+  return jobs;
+}
+
+// The single-pair zone of the first full mesh period after mid-span: its
+// travel range [lo, hi], found on a fine grid (NaN when there is none).
+std::pair<double, double> single_pair_zone(const MeshStiffnessModel& model) {
+  const double p = std::numbers::pi * model.drive().pinion.module;
+  const double X0 = std::floor(0.5 * model.drive().rack.span / p) * p;
+  const int n = 2000;
+  double lo = NAN, hi = NAN, best = 0, run = NAN;
+  for (int k = 0; k <= n; ++k) {
+    const double X = X0 + p * k / n;
+    const bool in = k < n && model.at(X).pairs.size() == 1;
+    if (in && std::isnan(run)) run = X;
+    if (!in && !std::isnan(run)) {
+      if (X - run > best) {
+        best = X - run;
+        lo = run;
+        hi = X;
+      }
+      run = NAN;
+    }
+  }
+  return {lo, hi};
+}
+
+std::string rack_header() {
+  return "key,problem,design,alpha_deg,ha_star,hf_star,root_radius_star,body_depth_star,teeth,profile_shift,"
+         "s_star,load_height_star,E_Pa,nu,face_width_m,module_m,force_N,analytic_Eb,fe_Eb,level,elements,seconds";
+}
+
+std::string tooth_row(const Job& j, ToothMember member, const FeOptions& o) {
+  const Drive d = job_drive(j);
+  const MeshStiffnessModel model(d);
+  const MeshGeometry& g = model.geometry();
+  const double s = g.path.s_start + j.fraction * (g.path.s_end - g.path.s_start);
+  const ToothComplianceFe c = fe_tooth_compliance(d, member, s, o);
+  const double m = d.pinion.module;
+  const Material& mat = member == ToothMember::kPinion ? d.pinion.material : d.rack.material;
+  const double b = member == ToothMember::kPinion
+                       ? d.pinion.face_width
+                       : (d.rack.face_width > 0 ? d.rack.face_width : d.pinion.face_width);
+  const double Eb = mat.youngs_modulus * b;
+  const double depth = d.rack.body_height > 0 ? d.rack.body_height : 2 * d.rack.section.neutral_axis_depth;
+  const double root = d.rack.root_radius > 0 ? d.rack.root_radius : g.pinion.cutter_tip_radius;
+  // Load height: rack, above the root line; pinion, the contact radius.
+  const double height = member == ToothMember::kRack ? g.rack.dedendum + g.contact_height_above_datum(s)
+                                                     : std::hypot(g.pinion.base_radius, s);
+  std::ostringstream r;
+  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\","
+    << fmt(d.pinion.pressure_angle * 180 / std::numbers::pi) << ','
+    << fmt(member == ToothMember::kRack ? d.rack.addendum_coef : d.pinion.addendum_coef) << ','
+    << fmt(member == ToothMember::kRack ? d.rack.dedendum_coef : d.pinion.dedendum_coef) << ',' << fmt(root / m) << ','
+    << fmt(depth / m) << ',' << d.pinion.teeth << ',' << fmt(d.pinion.profile_shift) << ',' << fmt(s / m) << ','
+    << fmt(height / m) << ',' << fmt(mat.youngs_modulus) << ',' << fmt(mat.poisson_ratio) << ',' << fmt(b) << ','
+    << fmt(m) << ',' << fmt(d.load.force) << ',' << fmt(c.analytic * Eb) << ',' << fmt(c.compliance * Eb) << ','
+    << o.level << ',' << c.elements << ',' << fmt(c.seconds);
+  return r.str();
+}
+
+std::string contact_header() {
+  return "key,problem,design,alpha_deg,teeth,profile_shift,module_m,face_width_m,force_N,travel_m,s_m,"
+         "K_fe,load_fraction,c_pinion_fe,c_rack_fe,c_pinion_an,c_rack_an,c_contact_fe,"
+         "c_hertz_linear,level,elements,seconds";
+}
+
+std::string contact_row(const Job& j, const FeOptions& o) {
+  const Drive d = job_drive(j);
+  const MeshStiffnessModel model(d);
+  const auto [lo, hi] = single_pair_zone(model);
+  if (std::isnan(lo)) throw std::runtime_error("no single-pair zone");
+  const double X = lo + j.fraction * (hi - lo);
+  const MeshState st = model.at(X);
+  const double s = st.pairs.at(0).s;
+  const FePosition pos = fe_mesh_position(d, X, o);
+  const ToothComplianceFe cp = fe_tooth_compliance(d, ToothMember::kPinion, s, o);
+  const ToothComplianceFe cr = fe_tooth_compliance(d, ToothMember::kRack, s, o);
+  const double b = std::min(d.pinion.face_width, d.rack.face_width > 0 ? d.rack.face_width : d.pinion.face_width);
+  const double c_contact = 1.0 / pos.stiffness - cp.compliance - cr.compliance;
+  std::ostringstream r;
+  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\","
+    << fmt(d.pinion.pressure_angle * 180 / std::numbers::pi) << ',' << d.pinion.teeth << ','
+    << fmt(d.pinion.profile_shift) << ',' << fmt(d.pinion.module) << ',' << fmt(b) << ',' << fmt(d.load.force) << ','
+    << fmt(X) << ',' << fmt(s) << ',' << fmt(pos.stiffness) << ',' << fmt(pos.load_fraction) << ','
+    << fmt(cp.compliance) << ',' << fmt(cr.compliance) << ',' << fmt(cp.analytic) << ',' << fmt(cr.analytic) << ','
+    << fmt(c_contact) << ','
+    << fmt(hertz_linear_compliance(effective_modulus(d.pinion.material, d.rack.material), b)) << ',' << o.level
+    << ',' << pos.elements << ',' << fmt(pos.seconds + cp.seconds + cr.seconds);
+  return r.str();
+}
+
+std::string now_utc() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
+  return buf;
+}
+
+std::string command_output(const char* cmd) {
+  std::string out;
+  if (FILE* f = popen(cmd, "r")) {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, f)) out += buf;
+    pclose(f);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+
+// ------------------------------------------------------------------ fit --
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else cur += c;
+  }
+  out.push_back(cur);
+  return out;
+}
+
+struct RackSample {
+  std::string base;
+  double alpha = 0, S = 0, q = 0, depth = 0, round = 0, analytic = 0, fe = 0;
+};
+
+std::vector<RackSample> read_rack_samples(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<RackSample> out;
+  std::vector<std::string> header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = split_csv(line);
+    if (f[0] == "key") {
+      header = f;
+      continue;
+    }
+    if (f.size() < 2 || f[1] == "skipped") continue;
+    auto col = [&](const char* name) {
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == name) return std::stod(f.at(i));
+      }
+      throw std::runtime_error(std::string("no column ") + name + " in " + path);
+    };
+    RackSample r;
+    r.base = f[1];
+    r.alpha = col("alpha_deg") * std::numbers::pi / 180;
+    const double t = std::tan(r.alpha), y = col("load_height_star");
+    const double w_f = std::numbers::pi / 4 + col("hf_star") * t;  // half thickness at the root line / m
+    r.S = 2 * w_f;
+    r.q = (y - (w_f - y * t) * t) / r.S;
+    r.depth = col("body_depth_star") / r.S;
+    r.round = col("root_radius_star") / r.S;
+    r.analytic = col("analytic_Eb");
+    r.fe = col("fe_Eb");
+    out.push_back(r);
+  }
+  return out;
+}
+
+// One row of the design matrix: the law's 12 coefficients times their
+// regressors, over the FE value (relative residuals).
+Eigen::RowVectorXd rack_regressors(const RackSample& r) {
+  const double c2 = std::cos(r.alpha) * std::cos(r.alpha), s2 = 1 - c2;
+  const double term[4] = {c2 * r.q * r.q, c2 * r.q, c2, s2};
+  const double g[3] = {1, std::log(r.depth), r.round};
+  Eigen::RowVectorXd row(12);
+  for (int t = 0; t < 4; ++t) {
+    for (int k = 0; k < 3; ++k) row(3 * t + k) = term[t] * g[k] / r.fe;
+  }
+  return row;
+}
+
+int fit_rack(const std::string& path) {
+  const std::vector<RackSample> rows = read_rack_samples(path);
+  if (rows.size() < 24) throw std::runtime_error("too few rack samples to fit (" + std::to_string(rows.size()) + ")");
+  auto solve = [&](const std::function<bool(const RackSample&)>& use) {
+    std::vector<const RackSample*> sel;
+    for (const RackSample& r : rows) {
+      if (use(r)) sel.push_back(&r);
+    }
+    Eigen::MatrixXd A(sel.size(), 12);
+    Eigen::VectorXd y(sel.size());
+    for (std::size_t i = 0; i < sel.size(); ++i) {
+      A.row(static_cast<Eigen::Index>(i)) = rack_regressors(*sel[i]);
+      y(static_cast<Eigen::Index>(i)) = (sel[i]->fe - sel[i]->analytic) / sel[i]->fe;
+    }
+    return Eigen::VectorXd(A.colPivHouseholderQr().solve(y));
+  };
+  auto residuals = [&](const Eigen::VectorXd& c, const std::function<bool(const RackSample&)>& use) {
+    double mx = 0, ss = 0;
+    int n = 0;
+    for (const RackSample& r : rows) {
+      if (!use(r)) continue;
+      const double res = (rack_regressors(r) * c)(0) - (r.fe - r.analytic) / r.fe;
+      mx = std::max(mx, std::abs(res));
+      ss += res * res;
+      ++n;
+    }
+    return std::pair<double, double>{mx, std::sqrt(ss / std::max(n, 1))};
+  };
+  double before = 0;
+  for (const RackSample& r : rows) before = std::max(before, std::abs(r.analytic - r.fe) / r.fe);
+  const auto all = [](const RackSample&) { return true; };
+  const Eigen::VectorXd c = solve(all);
+  const auto [mx, rms] = residuals(c, all);
+  std::printf("// %zu samples; clamped tooth alone: largest error %.3f of the FE compliance;\n", rows.size(), before);
+  std::printf("// with the foundation: largest %.4f, rms %.4f\n", mx, rms);
+  std::set<std::string> bases;
+  for (const RackSample& r : rows) bases.insert(r.base);
+  for (const std::string& b : bases) {
+    const Eigen::VectorXd cb = solve([&](const RackSample& r) { return r.base == b; });
+    const auto [mo, ro] = residuals(cb, [&](const RackSample& r) { return r.base != b; });
+    std::printf("// fitted on %s alone, on the others: largest %.4f, rms %.4f\n", b.c_str(), mo, ro);
+  }
+  const char* names[4] = {"kL", "kM", "kP", "kQ"};
+  for (int t = 0; t < 4; ++t) {
+    std::printf("constexpr Row %s{%.5f, %.5f, %.5f};\n", names[t], c(3 * t), c(3 * t + 1), c(3 * t + 2));
+  }
+  return 0;
+}
+
+int run(const Args& a) {
+  if (!a.fit.empty()) {
+    if (a.fit != "rack") throw std::invalid_argument("--fit must be rack");
+    return fit_rack(a.fit_file);
+  }
+  std::vector<Job> jobs;
+  std::string header;
+  if (a.set == "rack" || a.set == "pinion") {
+    jobs = a.set == "rack" ? rack_jobs() : pinion_jobs();
+    header = rack_header();
+  } else if (a.set == "contact") {
+    jobs = contact_jobs();
+    header = contact_header();
+  } else {
+    throw std::invalid_argument("--set must be rack, pinion or contact");
+  }
+  if (a.limit > 0 && static_cast<std::size_t>(a.limit) < jobs.size()) jobs.resize(static_cast<std::size_t>(a.limit));
+  const std::string partial = a.out + ".partial";
+  std::set<std::string> done;
+  {
+    std::ifstream in(partial);
+    for (std::string line; std::getline(in, line);) {
+      if (line.size() > 1 && line[0] == '"') done.insert(line.substr(1, line.find('"', 1) - 1));
+    }
+  }
+  const bool fresh = done.empty();
+  std::ofstream part(partial, std::ios::app);
+  if (fresh) part << header << '\n';
+  FeOptions o;
+  o.level = a.level;
+  std::mutex mu;
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> failures{0};
+  auto worker = [&] {
+    for (std::size_t k; (k = next++) < jobs.size();) {
+      const Job& j = jobs[k];
+      if (done.count(j.key)) continue;
+      std::string row;
+      try {
+        if (a.set == "contact") row = contact_row(j, o);
+        else row = tooth_row(j, a.set == "rack" ? ToothMember::kRack : ToothMember::kPinion, o);
+      } catch (const std::exception& e) {
+        std::string what = e.what();
+        what = what.substr(0, what.find('\n'));
+        std::lock_guard<std::mutex> lock(mu);
+        // A design the geometry refuses is part of the sample's edge, not a
+        // failure: it is recorded as skipped so a resumed run does not retry it.
+        part << '"' << j.key << "\",skipped,\"" << what << "\"\n" << std::flush;
+        std::fprintf(stderr, "[%zu/%zu] %s: skipped: %s\n", k + 1, jobs.size(), j.key.c_str(), what.c_str());
+        if (!dynamic_cast<const DesignError*>(&e)) ++failures;
+        continue;
+      }
+      std::lock_guard<std::mutex> lock(mu);
+      part << row << '\n' << std::flush;
+      std::fprintf(stderr, "[%zu/%zu] %s\n", k + 1, jobs.size(), j.key.c_str());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < std::max(1, a.threads); ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  part.close();
+
+  // Sorted, with provenance, written then renamed.
+  std::ifstream in(partial);
+  std::vector<std::string> rows;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    if (!line.empty()) rows.push_back(line);
+  }
+  std::sort(rows.begin(), rows.end());
+  const std::string tmp = a.out + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << "# rackopt FE calibration data, set '" << a.set << "' (docs/models/fe_calibration.md)\n"
+        << "# made by: ./build/fe_calibration --set " << a.set << " --level " << a.level << " --out <file>\n"
+        << "# finished: " << now_utc() << "; rackopt commit " << command_output("git -C " RACKOPT_SOURCE_DIR
+                                                                                 " rev-parse --short HEAD 2>/dev/null")
+        << "\n# FE: " << command_output("ccx -v 2>/dev/null | grep -i version | head -1")
+        << "; Gmsh " << command_output("gmsh --version 2>&1 | head -1") << "; plane stress, level " << a.level << "\n"
+        << "# compliances in units of 1/(E b) (columns *_Eb), lengths with _star in modules; skipped rows name the "
+           "reason\n"
+        << header << '\n';
+    for (const std::string& r : rows) out << r << '\n';
+  }
+  std::filesystem::rename(tmp, a.out);
+  std::filesystem::remove(partial);
+  std::fprintf(stderr, "%zu rows -> %s (%d unexpected failures)\n", rows.size(), a.out.c_str(), failures.load());
+  return failures > 0 ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args a;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string k = argv[i];
+      auto val = [&]() -> std::string {
+        if (i + 1 >= argc) throw std::invalid_argument(k + " needs a value");
+        return argv[++i];
+      };
+      if (k == "--set") a.set = val();
+      else if (k == "--out") a.out = val();
+      else if (k == "--threads") a.threads = std::stoi(val());
+      else if (k == "--level") a.level = std::stoi(val());
+      else if (k == "--limit") a.limit = std::stoi(val());
+      else if (k == "--fit") {
+        a.fit = val();
+        a.fit_file = val();
+      }
+      else throw std::invalid_argument("unknown option " + k);
+    }
+    if (a.out.empty() && a.fit.empty()) throw std::invalid_argument("--out FILE is required");
+    return run(a);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "fe_calibration: %s\n", e.what());
+    return 2;
+  }
+}

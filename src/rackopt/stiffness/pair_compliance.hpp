@@ -1,0 +1,98 @@
+// The local compliance of one rack-pinion tooth pair at its contact: the
+// pinion tooth (bending, shear, axial), the pinion's fillet foundation, the
+// rack tooth, the rack tooth's foundation in its body and the local contact
+// term, each switched by drive.effects. This is the one place the pair is
+// assembled: the mesh model (mesh_stiffness.hpp) and the wear model's load
+// sharing (wear/wear_life.hpp) both ask it, so an effect added here reaches
+// both. The rack body's bending on its supports is not a pair property
+// (rack_span.hpp couples the pairs through it).
+//
+// Example:
+//   const MeshGeometry geo = build_mesh_geometry(drive);
+//   PairCompliance pair(drive, geo);
+//   PairTeeth t = pair.teeth(s);                          // no contact term
+//   double c = t.total() + pair.contact(s, force);        // m/N at the pair force
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/stiffness/tooth_compliance.hpp"
+
+namespace rackopt {
+
+class PinionToothCompliance;
+class RackToothCompliance;
+
+// Depth of the rack body below the root line [m]: rack.body_height, or twice
+// the neutral-axis depth when the section was given explicitly (0 when
+// neither is known).
+double rack_body_depth(const RackSpec& rack);
+
+// The tooth parts of a pair [m/N], a part switched off is 0.
+struct PairTeeth {
+  ToothCompliance pinion;
+  double fillet = 0;           // pinion fillet foundation (Sainsot et al. 2004)
+  ToothCompliance rack;
+  double rack_foundation = 0;  // rack tooth foundation (rack_foundation.hpp)
+  double total() const { return pinion.total() + fillet + rack.total() + rack_foundation; }
+};
+
+class PairCompliance {
+ public:
+  // Builds the tooth models the effects ask for (nothing else is built).
+  // Throws InputError / DesignError as the tooth models do (e.g. a pointed
+  // tooth, a bore outside the root circle, a rack without body depth while
+  // rack_foundation is on).
+  PairCompliance(const Drive& drive, const MeshGeometry& geometry);
+  ~PairCompliance();
+  PairCompliance(PairCompliance&&) noexcept;
+  PairCompliance& operator=(PairCompliance&&) noexcept;
+
+  // Tooth parts at LOA coordinate s for the drive's own rack datum. A spall
+  // band reduces the section of the member it lies on; face_width (> 0) is
+  // the width that carries the load (less than the contact width while a
+  // spall is under the contact: the fillet foundation scales with it).
+  PairTeeth teeth(double s, const SpallBand* pinion_spall = nullptr, const SpallBand* rack_spall = nullptr,
+                  double face_width = 0) const;
+  // The same with the rack contact at height y_c above its root line (the
+  // wear model moves the rack datum with the clearance): the pinion parts at
+  // s, the rack parts at y_c.
+  PairTeeth teeth_at(double s, double rack_height, double face_width = 0) const;
+
+  // Local contact term [m/N] at LOA coordinate s for the pair force `force`
+  // [N] (secant: approach / force), contact width face_width (0: the
+  // drive's contact width), the rack contact at height rack_height above
+  // its root line (< 0: the drive's own rack datum). effects.hertz:
+  //   off: 0;  linear: 2/(pi b E*) (Yang & Lin), force-independent;
+  //   weber_banaschek: plane-stress Weber-Banaschek between the two tooth
+  //   centre lines, measured along the load line (docs/models/contact.md);
+  //   it grows as -ln(force) and the force is floored at 1 N/m of width.
+  // Throws DesignError "hertz_out_of_range" for a contact strip wider than
+  // the teeth.
+  double contact(double s, double force, double face_width = 0, double rack_height = -1) const;
+  // True when contact() depends on the force.
+  bool contact_depends_on_force() const;
+
+  // Height of the rack contact above the rack root line at s for the
+  // drive's own datum [m].
+  double rack_contact_height(double s) const;
+  double contact_width() const;
+
+  // The tooth models in use (null when switched off), for callers that
+  // validate spall bands against them.
+  const PinionToothCompliance* pinion_tooth() const;
+  const RackToothCompliance* rack_tooth() const;
+
+  // Warnings of the models built (e.g. outside a fitted range).
+  const std::vector<std::string>& warnings() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rackopt
