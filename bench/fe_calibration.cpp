@@ -8,12 +8,17 @@
 //
 //   ./build/fe_calibration --set rack|pinion|contact --out FILE
 //                          [--threads T] [--level L] [--limit N]
-//   ./build/fe_calibration --fit rack FILE
+//   ./build/fe_calibration --fit rack|pinion FILE
 //
 // --fit rack: the least-squares fit of the rack foundation law
 // (stiffness/rack_foundation.hpp) to a rack data file, printed as the
 // coefficient rows of rack_foundation.cpp, with the residuals before and
 // after and the fit on each base tooth form predicting the other.
+// --fit pinion: the same for the fillet calibration
+// (stiffness/fillet_calibration.hpp) on a pinion data file, the data's
+// analytic column being the tooth beam + Sainsot's foundation (run the
+// data set with effects.fillet_calibration off, as --set pinion does), and
+// each tooth count left out in turn.
 //
 // Rows are appended to FILE.partial as the solves finish, so an interrupted
 // run resumes where it stopped; the finished file is sorted by key and
@@ -45,6 +50,7 @@
 #include "rackopt/fe/mesh_position_fe.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -88,6 +94,9 @@ std::string fmt(double v) {
 
 Drive job_drive(const Job& j) {
   Drive d = load_problem(problem_path(j.problem), j.overrides);
+  // The data's analytic columns are what the calibrations correct.
+  d.effects.fillet_calibration = false;
+  d.effects.rack_foundation = false;
   d.effects.rack_span = RackSpanModel::kRigid;
   d.spalls.clear();
   d.pinion.tip_relief = {};
@@ -131,6 +140,7 @@ std::vector<Job> pinion_jobs() {
       for (double alpha : {14.0, 20.0, 25.0}) {
         std::vector<std::string> ov = {"pinion.teeth=" + std::to_string(z), "pinion.profile_shift=" + fmt(x),
                                        "pinion.pressure_angle=" + fmt(alpha) + " deg"};
+        // The analytic column is what the calibration corrects: the beam and Sainsot's term.
         for (double f : {0.05, 0.35, 0.65, 0.95}) {
           jobs.push_back({"gantry_axis|" + join(ov, ";") + "|" + fmt(f), "gantry_axis", ov, f});
         }
@@ -147,7 +157,7 @@ std::vector<Job> contact_jobs() {
   }
   // A spread: pressure angle, teeth and shift on the gantry axis.
   const std::vector<std::vector<std::string>> spread = {
-      {"pinion.pressure_angle=14 deg", "pinion.teeth=30"},
+      {"pinion.pressure_angle=14 deg", "pinion.teeth=16", "pinion.profile_shift=0.3"},
       {"pinion.pressure_angle=25 deg"},
       {"pinion.teeth=14", "pinion.profile_shift=0.4"},
       {"pinion.teeth=40", "pinion.profile_shift=-0.2"},
@@ -223,7 +233,7 @@ std::string contact_row(const Job& j, const FeOptions& o) {
   const Drive d = job_drive(j);
   const MeshStiffnessModel model(d);
   const auto [lo, hi] = single_pair_zone(model);
-  if (std::isnan(lo)) throw std::runtime_error("no single-pair zone");
+  if (std::isnan(lo)) throw DesignError("no_single_pair_zone", "no single-pair zone in the mesh period");
   const double X = lo + j.fraction * (hi - lo);
   const MeshState st = model.at(X);
   const double s = st.pairs.at(0).s;
@@ -382,10 +392,123 @@ int fit_rack(const std::string& path) {
   return 0;
 }
 
+
+struct PinionSample {
+  int teeth = 0;
+  double alpha_m = 0, q = 0, theta = 0, tan_a0 = 0, analytic = 0, fe = 0;
+};
+
+std::vector<PinionSample> read_pinion_samples(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<PinionSample> out;
+  std::vector<std::string> header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = split_csv(line);
+    if (f[0] == "key") {
+      header = f;
+      continue;
+    }
+    if (f.size() < 3 || f[1] == "skipped") continue;
+    auto col = [&](const char* name) {
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == name) return std::stod(f.at(i));
+      }
+      throw std::runtime_error(std::string("no column ") + name + " in " + path);
+    };
+    std::vector<std::string> ov;
+    std::stringstream ss(f[2]);
+    for (std::string t; std::getline(ss, t, ';');) {
+      if (!t.empty()) ov.push_back(t);
+    }
+    const Drive d = load_problem(problem_path(f[1]), ov);
+    const MeshGeometry g = build_mesh_geometry(d);
+    const FilletFoundationCompliance ff(g, d.pinion);
+    const double s = col("s_star") * d.pinion.module;
+    PinionSample r;
+    r.teeth = d.pinion.teeth;
+    r.alpha_m = std::max(s, 0.0) / g.pinion.base_radius - g.pinion.half_base_angle;
+    r.q = ff.u_f(s) / ff.root_thickness();
+    r.theta = ff.theta_f();
+    r.tan_a0 = std::tan(d.pinion.pressure_angle);
+    r.analytic = col("analytic_Eb");
+    r.fe = col("fe_Eb");
+    out.push_back(r);
+  }
+  return out;
+}
+
+Eigen::RowVectorXd pinion_regressors(const PinionSample& r) {
+  const double c2 = std::cos(r.alpha_m) * std::cos(r.alpha_m), s2 = 1 - c2;
+  const double term[4] = {c2 * r.q * r.q, c2 * r.q, c2, s2};
+  const double g[3] = {1, r.theta, r.tan_a0};
+  Eigen::RowVectorXd row(12);
+  for (int t = 0; t < 4; ++t) {
+    for (int k = 0; k < 3; ++k) row(3 * t + k) = term[t] * g[k] / r.fe;
+  }
+  return row;
+}
+
+int fit_pinion(const std::string& path) {
+  const std::vector<PinionSample> rows = read_pinion_samples(path);
+  if (rows.size() < 24) throw std::runtime_error("too few pinion samples to fit (" + std::to_string(rows.size()) + ")");
+  auto solve = [&](const std::function<bool(const PinionSample&)>& use) {
+    std::vector<const PinionSample*> sel;
+    for (const PinionSample& r : rows) {
+      if (use(r)) sel.push_back(&r);
+    }
+    Eigen::MatrixXd A(sel.size(), 12);
+    Eigen::VectorXd y(sel.size());
+    for (std::size_t i = 0; i < sel.size(); ++i) {
+      A.row(static_cast<Eigen::Index>(i)) = pinion_regressors(*sel[i]);
+      y(static_cast<Eigen::Index>(i)) = (sel[i]->fe - sel[i]->analytic) / sel[i]->fe;
+    }
+    return Eigen::VectorXd(A.colPivHouseholderQr().solve(y));
+  };
+  auto residuals = [&](const Eigen::VectorXd& c, const std::function<bool(const PinionSample&)>& use) {
+    double mx = 0, ss = 0;
+    int n = 0;
+    for (const PinionSample& r : rows) {
+      if (!use(r)) continue;
+      const double res = (pinion_regressors(r) * c)(0) - (r.fe - r.analytic) / r.fe;
+      mx = std::max(mx, std::abs(res));
+      ss += res * res;
+      ++n;
+    }
+    return std::pair<double, double>{mx, std::sqrt(ss / std::max(n, 1))};
+  };
+  double before = 0, th_lo = INFINITY, th_hi = 0;
+  for (const PinionSample& r : rows) {
+    before = std::max(before, std::abs(r.analytic - r.fe) / r.fe);
+    th_lo = std::min(th_lo, r.theta);
+    th_hi = std::max(th_hi, r.theta);
+  }
+  const auto all = [](const PinionSample&) { return true; };
+  const Eigen::VectorXd c = solve(all);
+  const auto [mx, rms] = residuals(c, all);
+  std::printf("// %zu samples, theta_f %.3f..%.3f rad; beam + Sainsot alone: largest error %.3f;\n", rows.size(),
+              th_lo, th_hi, before);
+  std::printf("// with the calibration: largest %.4f, rms %.4f\n", mx, rms);
+  std::set<int> teeth;
+  for (const PinionSample& r : rows) teeth.insert(r.teeth);
+  for (int z : teeth) {
+    const Eigen::VectorXd cz = solve([&](const PinionSample& r) { return r.teeth != z; });
+    const auto [mo, ro] = residuals(cz, [&](const PinionSample& r) { return r.teeth == z; });
+    std::printf("// z = %d left out of the fit, on it: largest %.4f, rms %.4f\n", z, mo, ro);
+  }
+  const char* names[4] = {"kL", "kM", "kP", "kQ"};
+  for (int t = 0; t < 4; ++t) {
+    std::printf("constexpr Row %s{%.5f, %.5f, %.5f};\n", names[t], c(3 * t), c(3 * t + 1), c(3 * t + 2));
+  }
+  return 0;
+}
+
 int run(const Args& a) {
   if (!a.fit.empty()) {
-    if (a.fit != "rack") throw std::invalid_argument("--fit must be rack");
-    return fit_rack(a.fit_file);
+    if (a.fit == "rack") return fit_rack(a.fit_file);
+    if (a.fit == "pinion") return fit_pinion(a.fit_file);
+    throw std::invalid_argument("--fit must be rack or pinion");
   }
   std::vector<Job> jobs;
   std::string header;
@@ -462,8 +585,10 @@ int run(const Args& a) {
                                                                                  " rev-parse --short HEAD 2>/dev/null")
         << "\n# FE: " << command_output("ccx -v 2>/dev/null | grep -i version | head -1")
         << "; Gmsh " << command_output("gmsh --version 2>&1 | head -1") << "; plane stress, level " << a.level << "\n"
-        << "# compliances in units of 1/(E b) (columns *_Eb), lengths with _star in modules; skipped rows name the "
-           "reason\n"
+        << (a.set == "contact" ? "# compliances in m/N, K in N/m, the FE contact term = 1/K_fe - c_pinion_fe - c_rack_fe; "
+                                 "skipped rows name the reason\n"
+                               : "# compliances in units of 1/(E b) (columns *_Eb), lengths with _star in modules; "
+                                 "skipped rows name the reason\n")
         << header << '\n';
     for (const std::string& r : rows) out << r << '\n';
   }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "rackopt/fe/gear_bodies.hpp"
 #include "rackopt/fe/mesh_placement.hpp"
 #include "rackopt/geometry/pinion_generation.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -140,7 +141,11 @@ TEST(MeshPlacement, NeighboursAreTheTeethEachSide) {
   EXPECT_EQ(leave.rack_tooth, st.pairs.front().rack_tooth + 1);
   EXPECT_LT(enter.s, model.geometry().path.s_start);
   EXPECT_GE(leave.s, model.geometry().path.s_end);
-  EXPECT_EQ(enter.rack_set, "T0_FLANK_L");
+  // The segment carries rack_teeth_each_side teeth before the pairs in mesh;
+  // the entering tooth is the last of them.
+  const int side = rack_teeth_each_side(pl.rack_body_depth, model.geometry().rack.pitch);
+  EXPECT_EQ(enter.rack_tooth - pl.first_rack_tooth, side - 1);
+  EXPECT_EQ(enter.rack_set, "T" + std::to_string(side - 1) + "_FLANK_L");
 }
 
 }  // namespace

@@ -80,7 +80,12 @@ TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
 // life(eps), docs/accuracy.md), with the same failure criterion, and the
 // exact map through the table agrees with the 60-step bisection.
 TEST(WearReliability, LifeTableMatchesDirectLivesAndBisection) {
-  const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
+  Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
+  // The table's exactness needs a life monotone in the sampled contact
+  // ratio. With the rack foundation on, this drive's life dips by 0.2 %
+  // just above eps = 1.51 (the table then detects it and falls back, as it
+  // should); the machinery is checked here on the monotone life without it.
+  d.effects.rack_foundation = false;
   WearReliabilityOptions o;
   o.samples = 1000;
   o.seed = 1;

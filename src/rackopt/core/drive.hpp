@@ -135,8 +135,13 @@ struct Effects {
   bool pinion_tooth = true;        // bending + shear + axial of the pinion tooth
   bool root_segment = true;        // Chen & Shao straight segment when r_f < r_b
   bool fillet_foundation = true;   // Sainsot et al. 2004 pinion body compliance
+  // FE calibration of the pinion's fillet foundation, on top of Sainsot's term (applied only
+  // when fillet_foundation is on; docs/models/fillet_calibration.md)
+  bool fillet_calibration = true;
   bool rack_tooth = true;          // trapezoid rack tooth bending + shear + axial
-  bool rack_foundation = true;     // rack tooth foundation in its body, FE-calibrated (docs/models/rack_foundation.md)
+  // The rack tooth's foundation in its body, FE-calibrated (applied only when rack_tooth is on;
+  // docs/models/rack_foundation.md)
+  bool rack_foundation = true;
   HertzModel hertz = HertzModel::kWeberBanaschek;
   RackSpanModel rack_span = RackSpanModel::kCoupled;
   bool couple_term = true;         // couple e*F*cos(a0) of the axial force about the neutral axis
@@ -149,7 +154,7 @@ struct Effects {
   // stiffness is infinite and the load sharing undefined, so a problem that
   // switches every one off is refused (docs/yaml.md, effects).
   bool any_compliance() const {
-    return pinion_tooth || fillet_foundation || rack_tooth || rack_foundation || hertz != HertzModel::kOff ||
+    return pinion_tooth || fillet_foundation || rack_tooth || hertz != HertzModel::kOff ||
            rack_span != RackSpanModel::kRigid;
   }
 };

@@ -879,14 +879,15 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
 
   // --- effects
   const Block fx(top.get("effects"), "effects", "effects", top.mark(),
-                 {"pinion_tooth", "root_segment", "fillet_foundation", "rack_tooth", "rack_foundation", "hertz",
-                  "rack_span",
+                 {"pinion_tooth", "root_segment", "fillet_foundation", "fillet_calibration", "rack_tooth",
+                  "rack_foundation", "hertz", "rack_span",
                   "couple_term", "body_axial", "body_shear", "interference_limit", "spalling"});
   Effects& e = drive.effects;
   const Effects defaults;
   e.pinion_tooth = fx.flag("pinion_tooth", defaults.pinion_tooth);
   e.root_segment = fx.flag("root_segment", defaults.root_segment);
   e.fillet_foundation = fx.flag("fillet_foundation", defaults.fillet_foundation);
+  e.fillet_calibration = fx.flag("fillet_calibration", defaults.fillet_calibration);
   e.rack_tooth = fx.flag("rack_tooth", defaults.rack_tooth);
   e.rack_foundation = fx.flag("rack_foundation", defaults.rack_foundation);
   {
@@ -912,8 +913,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   e.spalling = fx.flag("spalling", defaults.spalling);
   if (!e.any_compliance()) {
     throw InputError(top.key_mark("effects"), "effects",
-                     "every compliance is switched off (pinion_tooth, fillet_foundation, rack_tooth, rack_foundation, "
-                     "hertz: off, "
+                     "every compliance is switched off (pinion_tooth, fillet_foundation, rack_tooth, hertz: off, "
                      "rack_span: rigid): the mesh would be rigid, with infinite stiffness and no load sharing; "
                      "keep at least one on");
   }

@@ -1,6 +1,8 @@
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -35,6 +37,7 @@ struct MappedSpall {
 // depends on the effective width and, for Weber-Banaschek, on the pair force).
 struct LocalParts {
   PairTeeth teeth;
+  ContactLaw contact;     // the local contact term against the pair force
   double face_width = 0;  // effective contact width (reduced inside a spall)
   bool spalled = false;
 };
@@ -215,6 +218,7 @@ struct MeshStiffnessModel::Impl {
     out.face_width = contact_width - lost_width;
     out.spalled = lost_width > 0;
     out.teeth = pair.teeth(s, ps ? &ps->band : nullptr, rs ? &rs->band : nullptr, out.face_width);
+    out.contact = pair.contact_law(s, out.face_width);
     if ((ps || rs) && !out.spalled) {
       const PairTeeth healthy = pair.teeth(s, nullptr, nullptr, out.face_width);
       out.spalled = healthy.pinion.total() != out.teeth.pinion.total() ||
@@ -232,10 +236,6 @@ struct MeshStiffnessModel::Impl {
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
     return cache.emplace(key, local_parts(s, i, j)).first->second;
-  }
-
-  double hertz_compliance(const PairState& p, double face_width, double force) const {
-    return pair.contact(p.s, force, face_width);
   }
 
   // s of the pair on rack tooth j at travel X.
@@ -273,26 +273,79 @@ struct MeshStiffnessModel::Impl {
       p.rack_foundation = lp.teeth.rack_foundation;
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
-      p.hertz = hertz_compliance(p, lp.face_width, drive.load.force);
+      p.hertz = lp.contact.at(drive.load.force);
       st.pairs.push_back(p);
     }
     solve(st);
-    if (pair.contact_depends_on_force() && st.pairs.size() > 1) {
-      // The Hertz term depends on each pair's force: fixed-point iteration on
-      // the load shares (monotone, converges in a few steps).
-      for (int it = 0; it < 30; ++it) {
-        double change = 0;
-        for (PairState& p : st.pairs) {
-          const LocalParts& lp = parts_of(p.s, p.pinion_tooth, p.rack_tooth);
-          const double c = hertz_compliance(p, lp.face_width, drive.load.force * p.load_share);
-          change = std::max(change, std::abs(c - p.hertz) / std::max(c, 1e-30));
-          p.hertz = c;
-        }
-        solve(st);
-        if (change < 1e-10) break;
-      }
-    }
+    if (pair.contact_depends_on_force() && st.pairs.size() > 1) load_dependent_contact(st, parts_of);
     return st;
+  }
+
+  // The contact term depends on each pair's force, and the forces on the
+  // contact terms. Newton on the pair forces: the approach of pair j's
+  // contact, f c_j(f) with c_j = A_j - B_j ln f, is linearised at the current
+  // f_j as (c_j - B_j) f + B_j f_j, which is the loaded-contact problem with
+  // compliances c_j - B_j and gaps B_j f_j (plus any relief); it converges
+  // quadratically, in 2-4 solves. The state is then solved once more with
+  // the secant terms at the final forces (K = F / approach).
+  template <class Parts>
+  void load_dependent_contact(MeshState& st, Parts&& parts_of) const {
+    const std::size_t n = st.pairs.size();
+    const double F = drive.load.force;
+    const bool coupled = drive.effects.rack_span == RackSpanModel::kCoupled && span_model;
+    std::array<double, 64> C{};
+    std::array<double, 8> gap{}, f{};
+    std::array<ContactLaw, 8> law{};
+    if (n > 8) throw std::runtime_error("more than 8 pairs in mesh: not supported");
+    for (std::size_t j = 0; j < n; ++j) {
+      f[j] = F * st.pairs[j].load_share;
+      law[j] = parts_of(st.pairs[j].s, st.pairs[j].pinion_tooth, st.pairs[j].rack_tooth).contact;
+    }
+    double approach = 0;
+    for (int it = 0; it < 12; ++it) {
+      for (std::size_t j = 0; j < n; ++j) {
+        const PairState& pj = st.pairs[j];
+        const double c = law[j].at(f[j]);
+        const double slope = law[j].slope_at(f[j]);
+        const double teeth = pj.local() - pj.hertz;
+        C[j * n + j] = teeth + c - slope + (span_model && drive.effects.rack_span != RackSpanModel::kRigid ? pj.body : 0.0);
+        gap[j] = pj.relief + slope * f[j];
+        for (std::size_t k = j + 1; k < n; ++k) {
+          const PairState& pk = st.pairs[k];
+          const double ck = coupled && pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+          C[j * n + k] = ck;
+          C[k * n + j] = ck;
+        }
+      }
+      LoadedContact lc;
+      try {
+        lc = solve_loaded_contact(std::span<const double>(C.data(), n * n), std::span<const double>(gap.data(), n), F);
+      } catch (const std::runtime_error&) {
+        throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                                 std::to_string(st.travel));
+      }
+      double change = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        change = std::max(change, std::abs(lc.force[j] - f[j]));
+        f[j] = lc.force[j];
+      }
+      approach = lc.approach;
+      if (change <= 1e-11 * F) break;
+    }
+    for (std::size_t j = 0; j < n; ++j) st.pairs[j].hertz = law[j].at(f[j]);
+    if (relief) {
+      solve(st);  // the loaded state's tangent stiffness
+      return;
+    }
+    // At the fixed point the last linearised solve is the secant one: its
+    // approach carries F, and the forces are the shares.
+    st.stiffness = F / approach;
+    st.approach = approach;
+    st.local_stiffness = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      st.pairs[j].load_share = f[j] / F;
+      st.local_stiffness += 1.0 / st.pairs[j].local();
+    }
   }
 
   void solve(MeshState& st) const {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/stiffness/fillet_calibration.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
@@ -29,12 +31,34 @@ struct PairCompliance::Impl {
   double width = 0, e_star = 0;
   std::optional<PinionToothCompliance> pinion;
   std::optional<FilletFoundationCompliance> fillet;
+  std::optional<FilletCalibration> fillet_calibration;
   std::optional<RackToothCompliance> rack;
   std::optional<RackFoundationCompliance> rack_foundation;
   std::vector<std::string> warnings;
 
   double rack_height(double s) const { return rack_datum_height_at_pitch - s * sin_a0; }
 };
+
+namespace {
+
+// Sainsot's foundation plus its FE calibration (a stiffening). The sum stays
+// positive wherever the calibration was fitted; far outside, it is refused
+// rather than let a tooth pull its load.
+double fillet_at(const PairCompliance::Impl& im, double s, double b) {
+  double c = im.fillet->at(s, b);
+  if (im.fillet_calibration) {
+    c += im.fillet_calibration->at(s, b);
+    if (!(c > 0)) {
+      throw DesignError("fillet_calibration_out_of_range",
+                        "the FE calibration of the fillet foundation leaves a non-positive compliance at theta_f = " +
+                            std::to_string(im.fillet_calibration->theta_f()) +
+                            " rad (calibrated 0.06..0.26 rad, 14..25 deg); switch effects.fillet_calibration off");
+    }
+  }
+  return c;
+}
+
+}  // namespace
 
 PairCompliance::PairCompliance(const Drive& drive, const MeshGeometry& geo) : impl_(std::make_unique<Impl>()) {
   Impl& im = *impl_;
@@ -66,9 +90,19 @@ PairCompliance::PairCompliance(const Drive& drive, const MeshGeometry& geo) : im
         << " rad) is outside the fitted range of Sainsot's table (1.4..7, 0.01..0.12 rad); extrapolated";
       im.warnings.push_back(w.str());
     }
+    if (fx.fillet_calibration) {
+      im.fillet_calibration.emplace(geo, drive.pinion);
+      if (im.fillet_calibration->outside_fitted_range()) {
+        std::ostringstream w;
+        w << "fillet calibration: theta_f = " << im.fillet_calibration->theta_f()
+          << " rad or the pressure angle lies outside the FE-calibrated range (theta_f 0.06..0.26 rad, "
+             "14..25 deg); extrapolated";
+        im.warnings.push_back(w.str());
+      }
+    }
   }
   if (fx.rack_tooth) im.rack.emplace(geo, drive.rack, b_rack, drive.numerics);
-  if (fx.rack_foundation) {
+  if (fx.rack_foundation && fx.rack_tooth) {
     const double depth = rack_body_depth(drive.rack);
     if (!(depth > 0)) {
       throw InputError({}, "rack.body_height",
@@ -98,7 +132,7 @@ PairTeeth PairCompliance::teeth(double s, const SpallBand* pinion_spall, const S
   PairTeeth t;
   const double b = face_width > 0 ? face_width : im.width;
   if (im.pinion) t.pinion = im.pinion->at(s, pinion_spall);
-  if (im.fillet) t.fillet = im.fillet->at(s, b);
+  if (im.fillet) t.fillet = fillet_at(im, s, b);
   if (im.rack) t.rack = im.rack->at(s, rack_spall);
   if (im.rack_foundation) t.rack_foundation = im.rack_foundation->at(s);
   return t;
@@ -109,7 +143,7 @@ PairTeeth PairCompliance::teeth_at(double s, double rack_height, double face_wid
   PairTeeth t;
   const double b = face_width > 0 ? face_width : im.width;
   if (im.pinion) t.pinion = im.pinion->at(s);
-  if (im.fillet) t.fillet = im.fillet->at(s, b);
+  if (im.fillet) t.fillet = fillet_at(im, s, b);
   if (im.rack) t.rack = im.rack->at_height(rack_height);
   if (im.rack_foundation) t.rack_foundation = im.rack_foundation->at_height(rack_height);
   return t;
@@ -138,6 +172,25 @@ double PairCompliance::contact(double s, double force, double face_width, double
     }
   }
   return 0.0;
+}
+
+double ContactLaw::at(double force) const {
+  if (slope == 0) return c_ref;
+  return c_ref - slope * std::log(std::max(force, floor) / f_ref);
+}
+
+ContactLaw PairCompliance::contact_law(double s, double face_width, double rack_height) const {
+  const Impl& im = *impl_;
+  const double b = face_width > 0 ? face_width : im.width;
+  ContactLaw law;
+  law.floor = 1.0 * b;  // hertz_weber_banaschek_compliance's floor: 1 N per metre of width
+  law.f_ref = std::max(law.floor, 1.0);
+  law.c_ref = contact(s, law.f_ref, b, rack_height);
+  if (im.fx.hertz == HertzModel::kWeberBanaschek) {
+    law.slope = (1.0 / im.pinion_material.youngs_modulus + 1.0 / im.rack_material.youngs_modulus) /
+                (std::numbers::pi * b);
+  }
+  return law;
 }
 
 bool PairCompliance::contact_depends_on_force() const { return impl_->fx.hertz == HertzModel::kWeberBanaschek; }

@@ -35,10 +35,24 @@ double rack_body_depth(const RackSpec& rack);
 // The tooth parts of a pair [m/N], a part switched off is 0.
 struct PairTeeth {
   ToothCompliance pinion;
-  double fillet = 0;           // pinion fillet foundation (Sainsot et al. 2004)
+  double fillet = 0;           // pinion fillet foundation (Sainsot et al. 2004) + its FE calibration
   ToothCompliance rack;
   double rack_foundation = 0;  // rack tooth foundation (rack_foundation.hpp)
   double total() const { return pinion.total() + fillet + rack.total() + rack_foundation; }
+};
+
+// The local contact term of one contact as a function of the pair force:
+// c(f) = c_ref - slope ln(max(f, floor) / f_ref) [m/N]. Exact for the
+// Weber-Banaschek term (its half-width grows as sqrt(f)), constant for the
+// others (slope 0).
+struct ContactLaw {
+  double c_ref = 0;    // at f_ref [m/N]
+  double f_ref = 1;    // [N]
+  double slope = 0;    // -dc/d ln f [m/N]
+  double floor = 0;    // forces below it count as it [N]
+  double at(double force) const;
+  // -dc/d ln f at `force` (0 below the floor).
+  double slope_at(double force) const { return force > floor ? slope : 0.0; }
 };
 
 class PairCompliance {
@@ -74,6 +88,9 @@ class PairCompliance {
   // Throws DesignError "hertz_out_of_range" for a contact strip wider than
   // the teeth.
   double contact(double s, double force, double face_width = 0, double rack_height = -1) const;
+  // The same term as a law in the force at this contact: one logarithm per
+  // evaluation instead of the geometry and the square root.
+  ContactLaw contact_law(double s, double face_width = 0, double rack_height = -1) const;
   // True when contact() depends on the force.
   bool contact_depends_on_force() const;
 
@@ -90,8 +107,9 @@ class PairCompliance {
   // Warnings of the models built (e.g. outside a fitted range).
   const std::vector<std::string>& warnings() const;
 
- private:
   struct Impl;
+
+ private:
   std::unique_ptr<Impl> impl_;
 };
 

@@ -1,0 +1,170 @@
+// The analytic stiffness model against the committed FE reference data
+// (tests/data/fe, made by bench/fe_calibration; docs/models/fe_calibration.md).
+// No FE runs here: the data carry the FE numbers, the model is evaluated on
+// the same designs and contacts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
+#include "test_drives.hpp"
+
+namespace rackopt {
+namespace {
+
+// One data row: the columns by name, the design as problem + overrides.
+struct FeRow {
+  std::string problem;
+  std::vector<std::string> overrides;
+  std::map<std::string, double> num;
+  double operator[](const std::string& k) const { return num.at(k); }
+};
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+// The rows of tests/data/fe/<name> that carry values (skipped designs left out).
+std::vector<FeRow> fe_rows(const std::string& name) {
+  std::ifstream in(std::string(RACKOPT_SOURCE_DIR) + "/tests/data/fe/" + name);
+  EXPECT_TRUE(in.good()) << name;
+  std::vector<std::string> header;
+  std::vector<FeRow> out;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = split_csv_line(line);
+    if (f[0] == "key") {
+      header = f;
+      continue;
+    }
+    if (f.size() != header.size()) continue;  // a skipped design: key, "skipped", reason
+    FeRow r;
+    r.problem = f[1];
+    std::stringstream ss(f[2]);
+    for (std::string t; std::getline(ss, t, ';');) {
+      if (!t.empty()) r.overrides.push_back(t);
+    }
+    for (std::size_t i = 3; i < f.size(); ++i) r.num[header[i]] = std::stod(f[i]);
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+Drive row_drive(const FeRow& r) {
+  Drive d = test::problem(r.problem + ".yaml", r.overrides);
+  d.effects.rack_span = RackSpanModel::kRigid;  // the FE rack segment's base is held
+  return d;
+}
+
+// Largest |model / FE - 1| over the rows, with where it happened.
+struct WorstError {
+  double value = 0;
+  std::string where;
+  void add(double model, double fe, const FeRow& r) {
+    const double e = std::abs(model / fe - 1);
+    if (e > value) {
+      value = e;
+      where = r.problem;
+      for (const std::string& o : r.overrides) where += " " + o;
+    }
+  }
+};
+
+TEST(FeAgreement, RackToothOnItsBodyWithinThreePercentOnEverySample) {
+  const std::vector<FeRow> rows = fe_rows("rack_tooth.csv");
+  ASSERT_GE(rows.size(), 100u);
+  WorstError with, without;
+  for (const FeRow& r : rows) {
+    const Drive d = row_drive(r);
+    const MeshGeometry g = build_mesh_geometry(d);
+    const PairTeeth t = PairCompliance(d, g).teeth(r["s_star"] * d.pinion.module);
+    const double Eb = r["E_Pa"] * r["face_width_m"];
+    with.add((t.rack.total() + t.rack_foundation) * Eb, r["fe_Eb"], r);
+    without.add(t.rack.total() * Eb, r["fe_Eb"], r);
+  }
+  EXPECT_LT(with.value, 0.03) << with.where;
+  // The clamped tooth alone is far off: the foundation is what closes the gap.
+  EXPECT_GT(without.value, 0.3) << without.where;
+}
+
+// The goal is 3 %; the calibration in Sainsot's form reaches 3.9 % at worst
+// (rms 1.4 %) over z 12..40, x -0.3..0.5, 14..25 deg, its largest residuals
+// on 12- and 40-tooth pinions (docs/models/fillet_calibration.md). This
+// bound guards what is reached.
+TEST(FeAgreement, PinionToothWithinFourPercentOnEverySample) {
+  const std::vector<FeRow> rows = fe_rows("pinion_tooth.csv");
+  ASSERT_GE(rows.size(), 80u);
+  WorstError with, without;
+  for (const FeRow& r : rows) {
+    Drive d = row_drive(r);
+    const double s = r["s_star"] * d.pinion.module;
+    const double Eb = r["E_Pa"] * r["face_width_m"];
+    const MeshGeometry g = build_mesh_geometry(d);
+    const PairTeeth t = PairCompliance(d, g).teeth(s, nullptr, nullptr, d.pinion.face_width);
+    with.add((t.pinion.total() + t.fillet) * Eb, r["fe_Eb"], r);
+    d.effects.fillet_calibration = false;
+    const PairTeeth u = PairCompliance(d, g).teeth(s, nullptr, nullptr, d.pinion.face_width);
+    without.add((u.pinion.total() + u.fillet) * Eb, r["fe_Eb"], r);
+  }
+  EXPECT_LT(with.value, 0.04) << with.where;
+  EXPECT_GT(without.value, 0.15) << without.where;
+}
+
+TEST(FeAgreement, LocalContactTermWithinTwoPercentOfWhatFeLeavesBeyondTheTeeth) {
+  // FE contact term: the pair's FE compliance in the single-pair zone minus
+  // both FE single-tooth compliances (read on the tooth centre lines).
+  const std::vector<FeRow> rows = fe_rows("contact.csv");
+  ASSERT_GE(rows.size(), 6u);
+  WorstError wb, linear;
+  for (const FeRow& r : rows) {
+    const Drive d = row_drive(r);
+    const MeshGeometry g = build_mesh_geometry(d);
+    const double force = d.load.force * r["load_fraction"];
+    wb.add(PairCompliance(d, g).contact(r["s_m"], force), r["c_contact_fe"], r);
+    Drive lin = d;
+    lin.effects.hertz = HertzModel::kLinear;
+    linear.add(PairCompliance(lin, g).contact(r["s_m"], force), r["c_contact_fe"], r);
+  }
+  EXPECT_LT(wb.value, 0.02) << wb.where;
+  // The constant Yang-Lin term misses most of it.
+  EXPECT_GT(linear.value, 0.6) << linear.where;
+}
+
+TEST(FeAgreement, SinglePairMeshStiffnessWithinThreePercentOfFe) {
+  const std::vector<FeRow> rows = fe_rows("contact.csv");
+  ASSERT_GE(rows.size(), 6u);
+  WorstError k;
+  for (const FeRow& r : rows) {
+    Drive d = row_drive(r);
+    d.load.force *= r["load_fraction"];  // the force the FE's last step reached
+    const MeshState st = MeshStiffnessModel(d).at(r["travel_m"]);
+    ASSERT_EQ(st.pairs.size(), 1u);
+    k.add(st.stiffness, r["K_fe"], r);
+  }
+  EXPECT_LT(k.value, 0.03) << k.where;
+}
+
+}  // namespace
+}  // namespace rackopt
