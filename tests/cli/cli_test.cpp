@@ -94,7 +94,9 @@ TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {
 // the CSV (F/K without relief), and a relief given with --set.
 TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
   const std::string dir = tmp_dir("te");
-  const CliResult r = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid --out " + dir);
+  const CliResult r = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
+                          "--set effects.hertz=linear --set effects.rack_foundation=off "
+                          "--set effects.fillet_calibration=off --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   const double F = 50e3;  // load.force of rack_railway.yaml
@@ -115,7 +117,11 @@ TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
   ASSERT_EQ(v.size(), 6u);
   EXPECT_NEAR(v[5], F / v[1], 1e-8 * v[5]);
 
+  // The relief was sized on the papers' tooth model (constant contact term,
+  // clamped rack tooth, Sainsot's foundation): the same model on both sides.
   const CliResult relieved = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
+                                 "--set effects.hertz=linear --set effects.rack_foundation=off "
+                                 "--set effects.fillet_calibration=off "
                                  "--set 'pinion.tip_relief.amount=42 um' --set pinion.tip_relief.length=1.72 "
                                  "--set 'pinion.root_relief.amount=42 um' --set pinion.root_relief.length=1.72 --out " +
                                  tmp_dir("te_relief"));

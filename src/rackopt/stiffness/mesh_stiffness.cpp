@@ -330,7 +330,7 @@ struct MeshStiffnessModel::Impl {
         f[j] = lc.force[j];
       }
       approach = lc.approach;
-      if (change <= 1e-11 * F) break;
+      if (change <= 1e-15 * F) break;
     }
     for (std::size_t j = 0; j < n; ++j) st.pairs[j].hertz = law[j].at(f[j]);
     if (relief) {

@@ -74,6 +74,10 @@ std::string study_fingerprint(const StudySpec& spec) {
   Canon c;
   c.key("format");
   c.integer(1);
+  // The physics the recorded evaluations came from: a store made with an
+  // earlier stiffness model must not be resumed as if it were this one.
+  c.key("models");
+  c.str("pair compliance 2 (rack foundation, fillet calibration, plane-stress Weber-Banaschek contact)");
   c.key("kind");
   c.str(kind_name(spec.kind));
   c.key("seed");
