@@ -2,11 +2,14 @@
 // against: single-tooth compliances of the rack and of the pinion over a
 // design sample, and mesh positions in the single-pair zone (the local
 // contact term is what is left of the pair's FE compliance once both FE
-// tooth compliances are taken off). Writes CSV files with their provenance
+// tooth compliances are taken off), and mesh positions over one whole mesh
+// period of the shipped problems (single-, double- and, where it occurs,
+// triple-pair zones: what the pairs' coupling through the bodies would
+// show). Writes CSV files with their provenance
 // in '#' lines; tests/data/fe/ holds the committed ones and their README
 // says how they were made (docs/models/fe_calibration.md).
 //
-//   ./build/fe_calibration --set rack|pinion|contact --out FILE
+//   ./build/fe_calibration --set rack|pinion|contact|period --out FILE
 //                          [--threads T] [--level L] [--limit N]
 //   ./build/fe_calibration --fit rack|pinion FILE
 //
@@ -47,6 +50,7 @@
 #include <Eigen/Dense>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -164,6 +168,46 @@ std::vector<Job> contact_jobs() {
   };
   for (const auto& ov : spread) jobs.push_back({"gantry_axis|" + join(ov, ";") + "|0.5", "gantry_axis", ov, 0.5});
   return jobs;
+}
+
+// Six positions over one mesh period (cell middles from the entry of a pair)
+// of each shipped single-rack problem, rack rigid as everywhere here.
+std::vector<Job> period_jobs() {
+  std::vector<Job> jobs;
+  for (const char* p : {"gantry_axis", "large_module", "rack_railway", "ship_lift"}) {
+    for (int k = 0; k < 6; ++k) {
+      const double f = (k + 0.5) / 6;
+      jobs.push_back({std::string(p) + "||" + fmt(f), p, {}, f});
+    }
+  }
+  return jobs;
+}
+
+std::string period_header() {
+  return "key,problem,design,module_m,face_width_m,force_N,travel_m,period_fraction,pairs,K_fe,load_fraction,"
+         "shares_fe,level,elements,seconds";
+}
+
+std::string period_row(const Job& j, const FeOptions& o) {
+  const Drive d = job_drive(j);
+  const MeshStiffnessModel model(d);
+  double x0 = 0;
+  const std::vector<double> xs = fe_positions(model, 1, &x0);
+  (void)xs;
+  const double pitch = std::numbers::pi * d.pinion.module;
+  const double X = x0 + j.fraction * pitch;
+  const FePosition pos = fe_mesh_position(d, X, o);
+  std::string shares;
+  for (const FePair& p : pos.pairs) {
+    if (p.theoretical) shares += (shares.empty() ? "" : ";") + fmt(p.load_share);
+  }
+  std::ostringstream r;
+  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\"," << fmt(d.pinion.module) << ','
+    << fmt(std::min(d.pinion.face_width, d.rack.face_width > 0 ? d.rack.face_width : d.pinion.face_width)) << ','
+    << fmt(d.load.force) << ',' << fmt(X) << ',' << fmt(j.fraction) << ',' << model.at(X).pairs.size() << ','
+    << fmt(pos.stiffness) << ',' << fmt(pos.load_fraction) << ",\"" << shares << "\"," << o.level << ','
+    << pos.elements << ',' << fmt(pos.seconds);
+  return r.str();
 }
 
 // The single-pair zone of the first full mesh period after mid-span: its
@@ -450,6 +494,23 @@ Eigen::RowVectorXd pinion_regressors(const PinionSample& r) {
   return row;
 }
 
+// The coefficients that make the largest relative residual small rather
+// than their squares' sum: Lawson's iteration, least squares reweighted by
+// the residuals (200 steps; it settles long before). The pinion's law is
+// bounded by its form, so the worst sample is what matters.
+Eigen::VectorXd minimax_fit(const Eigen::MatrixXd& A, const Eigen::VectorXd& y) {
+  Eigen::VectorXd w = Eigen::VectorXd::Constant(y.size(), 1.0 / static_cast<double>(y.size()));
+  Eigen::VectorXd c;
+  for (int it = 0; it < 200; ++it) {
+    const Eigen::VectorXd root = w.cwiseSqrt();
+    c = (root.asDiagonal() * A).colPivHouseholderQr().solve(root.asDiagonal() * y);
+    w = w.cwiseProduct((A * c - y).cwiseAbs());
+    w /= w.sum();
+    w = w.cwiseMax(1e-12);
+  }
+  return c;
+}
+
 int fit_pinion(const std::string& path) {
   const std::vector<PinionSample> rows = read_pinion_samples(path);
   if (rows.size() < 24) throw std::runtime_error("too few pinion samples to fit (" + std::to_string(rows.size()) + ")");
@@ -464,7 +525,7 @@ int fit_pinion(const std::string& path) {
       A.row(static_cast<Eigen::Index>(i)) = pinion_regressors(*sel[i]);
       y(static_cast<Eigen::Index>(i)) = (sel[i]->fe - sel[i]->analytic) / sel[i]->fe;
     }
-    return Eigen::VectorXd(A.colPivHouseholderQr().solve(y));
+    return minimax_fit(A, y);
   };
   auto residuals = [&](const Eigen::VectorXd& c, const std::function<bool(const PinionSample&)>& use) {
     double mx = 0, ss = 0;
@@ -489,7 +550,7 @@ int fit_pinion(const std::string& path) {
   const auto [mx, rms] = residuals(c, all);
   std::printf("// %zu samples, theta_f %.3f..%.3f rad; beam + Sainsot alone: largest error %.3f;\n", rows.size(),
               th_lo, th_hi, before);
-  std::printf("// with the calibration: largest %.4f, rms %.4f\n", mx, rms);
+  std::printf("// with the calibration (minimax fit): largest %.4f, rms %.4f\n", mx, rms);
   std::set<int> teeth;
   for (const PinionSample& r : rows) teeth.insert(r.teeth);
   for (int z : teeth) {
@@ -518,8 +579,11 @@ int run(const Args& a) {
   } else if (a.set == "contact") {
     jobs = contact_jobs();
     header = contact_header();
+  } else if (a.set == "period") {
+    jobs = period_jobs();
+    header = period_header();
   } else {
-    throw std::invalid_argument("--set must be rack, pinion or contact");
+    throw std::invalid_argument("--set must be rack, pinion, contact or period");
   }
   if (a.limit > 0 && static_cast<std::size_t>(a.limit) < jobs.size()) jobs.resize(static_cast<std::size_t>(a.limit));
   const std::string partial = a.out + ".partial";
@@ -545,6 +609,7 @@ int run(const Args& a) {
       std::string row;
       try {
         if (a.set == "contact") row = contact_row(j, o);
+        else if (a.set == "period") row = period_row(j, o);
         else row = tooth_row(j, a.set == "rack" ? ToothMember::kRack : ToothMember::kPinion, o);
       } catch (const std::exception& e) {
         std::string what = e.what();
@@ -585,7 +650,9 @@ int run(const Args& a) {
                                                                                  " rev-parse --short HEAD 2>/dev/null")
         << "\n# FE: " << command_output("ccx -v 2>/dev/null | grep -i version | head -1")
         << "; Gmsh " << command_output("gmsh --version 2>&1 | head -1") << "; plane stress, level " << a.level << "\n"
-        << (a.set == "contact" ? "# compliances in m/N, K in N/m, the FE contact term = 1/K_fe - c_pinion_fe - c_rack_fe; "
+        << (a.set == "period" ? "# K in N/m (secant 0.2..1 of the last step), shares of the theoretical pairs "
+                                "nearest the pinion tip first; skipped rows name the reason\n"
+            : a.set == "contact" ? "# compliances in m/N, K in N/m, the FE contact term = 1/K_fe - c_pinion_fe - c_rack_fe; "
                                  "skipped rows name the reason\n"
                                : "# compliances in units of 1/(E b) (columns *_Eb), lengths with _star in modules; "
                                  "skipped rows name the reason\n")

@@ -190,3 +190,44 @@ TEST(HardCases, SpallTouchingRootOrTip) {
 
 }  // namespace
 }  // namespace rackopt
+
+namespace rackopt {
+namespace {
+
+// The load-dependent contact term at the ends of the load range: a vanishing
+// load (the term grows as -ln F, floored at 1 N per metre of width) and
+// loads up to where the contact strip outgrows the teeth (refused with a
+// code, never NaN). The stiffness rises with the load and is continuous in
+// it across the floor.
+TEST(HardCases, ContactTermFromVanishingToAbsurdLoads) {
+  const Drive base = small_fast(test::problem("rack_railway.yaml"));
+  ASSERT_EQ(base.effects.hertz, HertzModel::kWeberBanaschek);
+  double previous = 0;
+  int computed = 0;
+  bool refused = false;
+  for (double force : {1e-9, 1e-3, 1.0, 60.0, 1e3, 5e4, 1e6, 1e7, 1e8, 1e9, 1e10, 1e12}) {
+    SCOPED_TRACE("F = " + std::to_string(force));
+    Drive d = base;
+    d.load.force = force;
+    if (!check_curve(d)) {
+      refused = true;
+      continue;
+    }
+    EXPECT_FALSE(refused) << "a larger load computed after a smaller one was refused";
+    const double k = MeshStiffnessModel(d).curve().k_mean;
+    EXPECT_GE(k, previous * (1 - 1e-12));  // stiffening with load (equal below the floor)
+    previous = k;
+    ++computed;
+  }
+  EXPECT_GE(computed, 7);
+  EXPECT_TRUE(refused) << "a 1e12 N load should outgrow the teeth";
+  // Across the floor (1 N/m x 60 mm = 0.06 N) the term is continuous.
+  Drive below = base, above = base;
+  below.load.force = 0.06 * (1 - 1e-9);
+  above.load.force = 0.06 * (1 + 1e-9);
+  const double kb = MeshStiffnessModel(below).at(0.3).stiffness, ka = MeshStiffnessModel(above).at(0.3).stiffness;
+  EXPECT_NEAR(ka / kb, 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace rackopt

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "rackopt/stiffness/iso_single_stiffness.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/output/json_writer.hpp"
 
 namespace rackopt {
@@ -72,7 +74,30 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
   }
   o << ", interference limit " << onoff(e.interference_limit) << ", spalls "
     << (e.spalling ? std::to_string(d.spalls.size()) : std::string("off")) << "\n";
+  o << iso_single_stiffness_line(d, g);
   for (const std::string& w : g.warnings) o << "  warning: " << w << "\n";
+  return o.str();
+}
+
+double single_pair_stiffness_at_pitch_point(const Drive& d, const MeshGeometry& g) {
+  const PairCompliance pair(d, g);
+  const double s = g.path.s_pitch;
+  return 1.0 / (pair.teeth(s).total() + pair.contact(s, d.load.force));
+}
+
+std::string iso_single_stiffness_line(const Drive& d, const MeshGeometry& g) {
+  std::ostringstream o;
+  try {
+    const IsoSingleStiffness iso = iso_single_stiffness(d);
+    o << "  beside ISO 6336-1: single stiffness c' = " << fmt("%.3g", iso.c_prime) << " N/(mm um), c' b = "
+      << fmt("%.4g", iso.stiffness / 1e6) << " MN/m";
+    if (iso.load_factor < 1) o << " (load factor " << fmt("%.3f", iso.load_factor) << ")";
+    const double k = single_pair_stiffness_at_pitch_point(d, g);
+    o << "; this model, one pair at the pitch point, rigid rack body: " << fmt("%.4g", k / 1e6) << " MN/m ("
+      << fmt("%.2f", k / iso.stiffness) << " c' b)\n";
+  } catch (const std::exception& ex) {
+    o << "\n  (the model's single pair at the pitch point: not available: " << ex.what() << ")\n";
+  }
   return o.str();
 }
 
@@ -173,6 +198,15 @@ std::string stiffness_json(const Drive& d, const MeshGeometry& g, const Stiffnes
   j.key("base_pitch").value(g.path.base_pitch);
   j.end_object();
   j.key("undercut").value(g.pinion.undercut);
+  {
+    // ISO 6336-1's single stiffness beside the model's single pair at the pitch point.
+    const IsoSingleStiffness iso = iso_single_stiffness(d);
+    j.key("iso_6336_single_stiffness").begin_object();
+    j.key("c_prime_N_per_mm_um").value(iso.c_prime);
+    j.key("stiffness_N_per_m").value(iso.stiffness);
+    j.key("model_single_pair_at_pitch_point_N_per_m").value(single_pair_stiffness_at_pitch_point(d, g));
+    j.end_object();
+  }
   j.key("k_min").value(c.k_min);
   j.key("k_max").value(c.k_max);
   j.key("k_mean").value(c.k_mean);

@@ -16,6 +16,14 @@ namespace rackopt {
 // undercut/interference, warnings. Lengths in mm, angles in deg.
 std::string geometry_summary(const Drive& drive, const MeshGeometry& geometry);
 
+// ISO 6336-1's single stiffness c' (iso_single_stiffness.hpp) beside this
+// model's single pair at the pitch point with a rigid rack body, one line
+// (part of geometry_summary).
+std::string iso_single_stiffness_line(const Drive& drive, const MeshGeometry& geometry);
+// 1 / (the pair's tooth compliances + its contact term at the drive's load)
+// at the pitch point [N/m]. Throws as PairCompliance does.
+double single_pair_stiffness_at_pitch_point(const Drive& drive, const MeshGeometry& geometry);
+
 // Human-readable stiffness result (MN/m), plus where files went.
 std::string stiffness_summary(const StiffnessCurve& curve);
 

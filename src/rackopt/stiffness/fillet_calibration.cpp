@@ -8,18 +8,17 @@
 namespace rackopt {
 namespace {
 
-// X = X0 + X1 theta_f + X2 tan a0 for X in L, M, P, Q: the least-squares fit
-// of `fe_calibration --fit pinion tests/data/fe/pinion_tooth.csv`
-// (docs/models/fillet_calibration.md), relative residuals weighted by the FE
-// compliance.
+// X = X0 + X1 theta_f + X2 tan a0 for X in L, M, P, Q: the minimax fit of
+// the relative residuals by `fe_calibration --fit pinion
+// tests/data/fe/pinion_tooth.csv` (docs/models/fillet_calibration.md).
 struct Row {
   double c0, c_theta, c_tan;
 };
 // FILLET_CALIBRATION_FIT_BEGIN
-constexpr Row kL{1.26628, 26.00572, -12.77936};
-constexpr Row kM{-1.64348, -3.32386, 4.14405};
-constexpr Row kP{0.16413, -1.19494, -1.14530};
-constexpr Row kQ{-4.84644, -13.81378, 10.39529};
+constexpr Row kL{4.77775, 32.61749, -23.56976};
+constexpr Row kM{-4.66072, -8.39449, 12.80309};
+constexpr Row kP{0.61720, 0.16896, -2.68637};
+constexpr Row kQ{-4.54669, -18.17139, 11.99049};
 // FILLET_CALIBRATION_FIT_END
 
 double evaluate(const Row& r, double theta, double t) { return r.c0 + r.c_theta * theta + r.c_tan * t; }

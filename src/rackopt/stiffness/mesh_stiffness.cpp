@@ -286,8 +286,10 @@ struct MeshStiffnessModel::Impl {
   // contact, f c_j(f) with c_j = A_j - B_j ln f, is linearised at the current
   // f_j as (c_j - B_j) f + B_j f_j, which is the loaded-contact problem with
   // compliances c_j - B_j and gaps B_j f_j (plus any relief); it converges
-  // quadratically, in 2-4 solves. The state is then solved once more with
-  // the secant terms at the final forces (K = F / approach).
+  // quadratically, in 2-4 solves. At the solution the last linearised
+  // solve is the secant one: K = F / approach. With relief the loaded state
+  // is solved once more with the secant terms at the final forces, for its
+  // tangent stiffness (solve_relieved).
   template <class Parts>
   void load_dependent_contact(MeshState& st, Parts&& parts_of) const {
     const std::size_t n = st.pairs.size();
@@ -301,36 +303,67 @@ struct MeshStiffnessModel::Impl {
       f[j] = F * st.pairs[j].load_share;
       law[j] = parts_of(st.pairs[j].s, st.pairs[j].pinion_tooth, st.pairs[j].rack_tooth).contact;
     }
+    // The body's coupling does not change with the forces: once.
+    for (std::size_t j = 0; j < n; ++j) {
+      const PairState& pj = st.pairs[j];
+      for (std::size_t k = j + 1; k < n; ++k) {
+        const PairState& pk = st.pairs[k];
+        const double ck = coupled && pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        C[j * n + k] = ck;
+        C[k * n + j] = ck;
+      }
+    }
+    using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
+    using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 8, 1>;
     double approach = 0;
     for (int it = 0; it < 12; ++it) {
       for (std::size_t j = 0; j < n; ++j) {
         const PairState& pj = st.pairs[j];
-        const double c = law[j].at(f[j]);
         const double slope = law[j].slope_at(f[j]);
-        const double teeth = pj.local() - pj.hertz;
-        C[j * n + j] = teeth + c - slope + (span_model && drive.effects.rack_span != RackSpanModel::kRigid ? pj.body : 0.0);
+        C[j * n + j] = pj.local() - pj.hertz + law[j].at(f[j]) - slope + pj.body;
         gap[j] = pj.relief + slope * f[j];
-        for (std::size_t k = j + 1; k < n; ++k) {
-          const PairState& pk = st.pairs[k];
-          const double ck = coupled && pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
-          C[j * n + k] = ck;
-          C[k * n + j] = ck;
+      }
+      // Every pair loaded (the usual case): two solves with one
+      // factorisation, f = delta u - v with (C) u = 1, (C) v = gap and
+      // sum f = F. A pair that would pull goes to the unilateral solver.
+      Mat M(n, n);
+      Vec g(n);
+      for (std::size_t a = 0; a < n; ++a) {
+        g[a] = gap[a];
+        for (std::size_t b = 0; b < n; ++b) M(a, b) = C[a * n + b];
+      }
+      const Eigen::LLT<Mat> llt(M);
+      std::array<double, 8> next{};
+      bool all_loaded = llt.info() == Eigen::Success;
+      double delta = 0;
+      if (all_loaded) {
+        const Vec u = llt.solve(Vec::Ones(n)), v = llt.solve(g);
+        delta = (F + v.sum()) / u.sum();
+        for (std::size_t a = 0; a < n; ++a) {
+          next[a] = delta * u[a] - v[a];
+          all_loaded = all_loaded && next[a] >= 0 && std::isfinite(next[a]);
         }
       }
-      LoadedContact lc;
-      try {
-        lc = solve_loaded_contact(std::span<const double>(C.data(), n * n), std::span<const double>(gap.data(), n), F);
-      } catch (const std::runtime_error&) {
-        throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
-                                 std::to_string(st.travel));
+      if (!all_loaded) {
+        LoadedContact lc;
+        try {
+          lc = solve_loaded_contact(std::span<const double>(C.data(), n * n), std::span<const double>(gap.data(), n), F);
+        } catch (const std::runtime_error&) {
+          throw std::runtime_error("mesh flexibility matrix is not positive definite at X = " +
+                                   std::to_string(st.travel));
+        }
+        for (std::size_t a = 0; a < n; ++a) next[a] = lc.force[a];
+        delta = lc.approach;
       }
       double change = 0;
-      for (std::size_t j = 0; j < n; ++j) {
-        change = std::max(change, std::abs(lc.force[j] - f[j]));
-        f[j] = lc.force[j];
+      for (std::size_t a = 0; a < n; ++a) {
+        change = std::max(change, std::abs(next[a] - f[a]));
+        f[a] = next[a];
       }
-      approach = lc.approach;
-      if (change <= 1e-15 * F) break;
+      approach = delta;
+      // Newton's error squares each step: a step that moved the forces by
+      // 1e-9 F leaves them about 1e-18 F from the solution.
+      if (change <= 1e-9 * F) break;
     }
     for (std::size_t j = 0; j < n; ++j) st.pairs[j].hertz = law[j].at(f[j]);
     if (relief) {

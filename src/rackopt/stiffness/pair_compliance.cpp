@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string>
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/fillet_calibration.hpp"
@@ -176,7 +177,13 @@ double PairCompliance::contact(double s, double force, double face_width, double
 
 double ContactLaw::at(double force) const {
   if (slope == 0) return c_ref;
-  return c_ref - slope * std::log(std::max(force, floor) / f_ref);
+  const double c = c_ref - slope * std::log(std::max(force, floor) / f_ref);
+  if (!(c > 0)) {
+    // As hertz_weber_banaschek_compliance: the strip has outgrown the teeth.
+    throw DesignError("hertz_out_of_range", "Weber-Banaschek contact strip at " + std::to_string(force) +
+                                                " N is wider than the teeth: outside the contact model");
+  }
+  return c;
 }
 
 ContactLaw PairCompliance::contact_law(double s, double face_width, double rack_height) const {

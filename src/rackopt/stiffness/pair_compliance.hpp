@@ -50,6 +50,8 @@ struct ContactLaw {
   double f_ref = 1;    // [N]
   double slope = 0;    // -dc/d ln f [m/N]
   double floor = 0;    // forces below it count as it [N]
+  // Throws DesignError "hertz_out_of_range" where the law leaves no
+  // positive compliance (a strip wider than the teeth).
   double at(double force) const;
   // -dc/d ln f at `force` (0 below the floor).
   double slope_at(double force) const { return force > floor ? slope : 0.0; }
