@@ -134,8 +134,9 @@ TEST(RackOnSupportsFe, MeshPositionOnTheSupportsAtMidSpan) {
   const double X = 0.5 * d.rack.span + 0.31 * pitch;
   const FePosition p = fe_mesh_position(d, X, on);
   const MeshState an = coupled.at(X);
-  // The rack segment held at its base, by the analytic model (FE with a held
-  // base is 0.54-0.64 of it, docs/accuracy.md): one contact solve less.
+  // The rack segment held at its base, by the analytic model (the FE-grade
+  // model is within about 1 % of FE there, docs/models/fe_calibration.md):
+  // one contact solve less.
   const double held = MeshStiffnessModel(fe_reference_drive(d)).at(X).stiffness;
   std::printf("  X = %.4f m (a = %.4f m): K FE on supports %.4e N/m, analytic coupled %.4e (FE/analytic %.3f); FE base "
               "held (analytic) %.4e; %d elements, %.1f s\n",
@@ -148,7 +149,9 @@ TEST(RackOnSupportsFe, MeshPositionOnTheSupportsAtMidSpan) {
   // within ccx's residual tolerance (0.5 % of the mean force by default).
   EXPECT_NEAR(share_sum(p), 1.0, 5e-3);
   for (std::size_t k = 0; k < p.pairs.size(); ++k) EXPECT_NEAR(p.pairs[k].s, an.pairs[k].s, 1e-12);
-  // A sanity bound only: the agreement is measured in the docs.
+  // A sanity bound only: measured 1.32 (the coupled analytic span is too
+  // compliant where the teeth are tall against the body, an open item of
+  // docs/models/fe_calibration.md).
   EXPECT_GT(p.stiffness / an.stiffness, 0.3);
   EXPECT_LT(p.stiffness / an.stiffness, 3.0);
 }

@@ -25,6 +25,7 @@ struct FeRow {
   std::string problem;
   std::vector<std::string> overrides;
   std::map<std::string, double> num;
+  std::map<std::string, std::string> text;  // the cells that are not numbers
   double operator[](const std::string& k) const { return num.at(k); }
 };
 
@@ -66,7 +67,18 @@ std::vector<FeRow> fe_rows(const std::string& name) {
     for (std::string t; std::getline(ss, t, ';');) {
       if (!t.empty()) r.overrides.push_back(t);
     }
-    for (std::size_t i = 3; i < f.size(); ++i) r.num[header[i]] = std::stod(f[i]);
+    for (std::size_t i = 3; i < f.size(); ++i) {
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(f[i], &used);
+        if (used == f[i].size()) {
+          r.num[header[i]] = v;
+          continue;
+        }
+      } catch (const std::exception&) {
+      }
+      r.text[header[i]] = f[i];
+    }
     out.push_back(std::move(r));
   }
   return out;
@@ -160,6 +172,42 @@ TEST(FeAgreement, SinglePairMeshStiffnessWithinThreePercentOfFe) {
     k.add(st.stiffness, r["K_fe"], r);
   }
   EXPECT_LT(k.value, 0.03) << k.where;
+}
+
+}  // namespace
+}  // namespace rackopt
+
+namespace rackopt {
+namespace {
+
+// Over one whole mesh period of the shipped problems (tests/data/fe/period.csv):
+// the single-pair zone within 3 % and the load shares within 0.03 everywhere.
+// In the double-pair zone the model is stiffer than FE by 9-13 %: a load on
+// one tooth moves its loaded neighbour (through the rack body and the pinion
+// rim), which the pairs in parallel leave out. That coupling is the next
+// term (docs/models/fe_calibration.md); the bound below guards what is
+// reached and fails if it grows.
+TEST(FeAgreement, WholeMeshPeriodOfTheShippedProblems) {
+  const std::vector<FeRow> rows = fe_rows("period.csv");
+  ASSERT_GE(rows.size(), 20u);
+  WorstError single, multi;
+  double share_error = 0;
+  for (const FeRow& r : rows) {
+    Drive d = row_drive(r);
+    d.load.force *= r["load_fraction"];
+    const MeshState st = MeshStiffnessModel(d).at(r["travel_m"]);
+    ASSERT_EQ(static_cast<double>(st.pairs.size()), r["pairs"]);
+    (st.pairs.size() == 1 ? single : multi).add(st.stiffness, r["K_fe"], r);
+    // One pair: the cell is a plain number; more: "a;b".
+    std::stringstream shares(r.text.count("shares_fe") ? r.text.at("shares_fe") : std::to_string(r["shares_fe"]));
+    std::size_t k = 0;
+    for (std::string v; std::getline(shares, v, ';') && k < st.pairs.size(); ++k) {
+      share_error = std::max(share_error, std::abs(st.pairs[k].load_share - std::stod(v)));
+    }
+  }
+  EXPECT_LT(single.value, 0.03) << single.where;
+  EXPECT_LT(multi.value, 0.14) << multi.where;
+  EXPECT_LT(share_error, 0.03);
 }
 
 }  // namespace
