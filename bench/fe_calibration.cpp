@@ -11,7 +11,7 @@
 //
 //   ./build/fe_calibration --set rack|pinion|contact|period --out FILE
 //                          [--threads T] [--level L] [--limit N]
-//   ./build/fe_calibration --fit rack|pinion FILE
+//   ./build/fe_calibration --fit rack|pinion|coupling FILE
 //
 // --fit rack: the least-squares fit of the rack foundation law
 // (stiffness/rack_foundation.hpp) to a rack data file, printed as the
@@ -22,6 +22,10 @@
 // analytic column being the tooth beam + Sainsot's foundation (run the
 // data set with effects.fillet_calibration off, as --set pinion does), and
 // each tooth count left out in turn.
+// --fit coupling: the share kappa of the pairs' coupling
+// (stiffness/pair_coupling.hpp) on a period data file, the largest K error
+// of the double-pair positions made smallest, and each problem left out in
+// turn.
 //
 // Rows are appended to FILE.partial as the solves finish, so an interrupted
 // run resumes where it stopped; the finished file is sorted by key and
@@ -565,11 +569,96 @@ int fit_pinion(const std::string& path) {
   return 0;
 }
 
+
+// One double-pair position: the model's two pair compliances and their
+// foundations (pair coupling off, rigid rack, at the FE's load) and K_FE.
+struct CouplingSample {
+  std::string problem;
+  double c1 = 0, c2 = 0, foundations = 0, k_fe = 0;
+  // K of two pairs with cross compliance x = kappa * foundations.
+  double k(double kappa) const {
+    const double x = kappa * foundations;
+    return (c1 + c2 - 2 * x) / (c1 * c2 - x * x);
+  }
+};
+
+int fit_coupling(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<CouplingSample> rows;
+  std::vector<std::string> header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = split_csv(line);
+    if (f[0] == "key") {
+      header = f;
+      continue;
+    }
+    if (f.size() != header.size()) continue;
+    auto col = [&](const char* name) {
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == name) return std::stod(f.at(i));
+      }
+      throw std::runtime_error(std::string("no column ") + name + " in " + path);
+    };
+    if (col("pairs") != 2) continue;
+    Drive d = load_problem(problem_path(f[1]));
+    d.effects.rack_span = RackSpanModel::kRigid;
+    d.effects.pair_coupling = false;
+    d.spalls.clear();
+    d.load.force *= col("load_fraction");
+    const MeshState st = MeshStiffnessModel(d).at(col("travel_m"));
+    if (st.pairs.size() != 2) throw std::runtime_error("expected two pairs at a row of " + path);
+    CouplingSample r;
+    r.problem = f[1];
+    r.c1 = st.pairs[0].local();
+    r.c2 = st.pairs[1].local();
+    r.foundations = 0.5 * (st.pairs[0].fillet + st.pairs[0].rack_foundation + st.pairs[1].fillet +
+                           st.pairs[1].rack_foundation);
+    r.k_fe = col("K_fe");
+    rows.push_back(r);
+  }
+  if (rows.size() < 4) throw std::runtime_error("too few double-pair positions in " + path);
+  auto worst = [&](double kappa, const std::function<bool(const CouplingSample&)>& use) {
+    double w = 0;
+    for (const CouplingSample& r : rows) {
+      if (use(r)) w = std::max(w, std::abs(r.k(kappa) / r.k_fe - 1));
+    }
+    return w;
+  };
+  auto best = [&](const std::function<bool(const CouplingSample&)>& use) {
+    double kappa = 0, w = INFINITY;
+    for (int i = 0; i <= 10000; ++i) {
+      const double k = i * 1e-4;
+      const double e = worst(k, use);
+      if (e < w) {
+        w = e;
+        kappa = k;
+      }
+    }
+    return kappa;
+  };
+  const auto all = [](const CouplingSample&) { return true; };
+  const double kappa = best(all);
+  std::printf("// %zu double-pair positions; pairs in parallel: largest K error %.4f; with kappa = %.4f: %.4f\n",
+              rows.size(), worst(0, all), kappa, worst(kappa, all));
+  std::set<std::string> problems;
+  for (const CouplingSample& r : rows) problems.insert(r.problem);
+  for (const std::string& p : problems) {
+    const double k = best([&](const CouplingSample& r) { return r.problem != p; });
+    std::printf("// %s left out: kappa %.4f, on it: largest K error %.4f\n", p.c_str(), k,
+                worst(k, [&](const CouplingSample& r) { return r.problem == p; }));
+  }
+  std::printf("double pair_coupling_share() { return %.4f; }\n", kappa);
+  return 0;
+}
+
 int run(const Args& a) {
   if (!a.fit.empty()) {
+    if (a.fit == "coupling") return fit_coupling(a.fit_file);
     if (a.fit == "rack") return fit_rack(a.fit_file);
     if (a.fit == "pinion") return fit_pinion(a.fit_file);
-    throw std::invalid_argument("--fit must be rack or pinion");
+    throw std::invalid_argument("--fit must be rack, pinion or coupling");
   }
   std::vector<Job> jobs;
   std::string header;

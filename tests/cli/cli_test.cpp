@@ -96,7 +96,7 @@ TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
   const std::string dir = tmp_dir("te");
   const CliResult r = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
                           "--set effects.hertz=linear --set effects.rack_foundation=off "
-                          "--set effects.fillet_calibration=off --out " + dir);
+                          "--set effects.fillet_calibration=off --set effects.pair_coupling=off --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   const double F = 50e3;  // load.force of rack_railway.yaml
@@ -121,7 +121,7 @@ TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
   // clamped rack tooth, Sainsot's foundation): the same model on both sides.
   const CliResult relieved = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
                                  "--set effects.hertz=linear --set effects.rack_foundation=off "
-                                 "--set effects.fillet_calibration=off "
+                                 "--set effects.fillet_calibration=off --set effects.pair_coupling=off "
                                  "--set 'pinion.tip_relief.amount=42 um' --set pinion.tip_relief.length=1.72 "
                                  "--set 'pinion.root_relief.amount=42 um' --set pinion.root_relief.length=1.72 --out " +
                                  tmp_dir("te_relief"));

@@ -181,12 +181,9 @@ namespace rackopt {
 namespace {
 
 // Over one whole mesh period of the shipped problems (tests/data/fe/period.csv):
-// the single-pair zone within 3 % and the load shares within 0.03 everywhere.
-// In the double-pair zone the model is stiffer than FE by 9-13 %: a load on
-// one tooth moves its loaded neighbour (through the rack body and the pinion
-// rim), which the pairs in parallel leave out. That coupling is the next
-// term (docs/models/fe_calibration.md); the bound below guards what is
-// reached and fails if it grows.
+// K within 3 % in the single- and the double-pair zone, the load shares
+// within 0.03. Without the pairs' coupling the double-pair zone is 9.5-12 %
+// too stiff (a load on one tooth moves its loaded neighbour).
 TEST(FeAgreement, WholeMeshPeriodOfTheShippedProblems) {
   const std::vector<FeRow> rows = fe_rows("period.csv");
   ASSERT_GE(rows.size(), 20u);
@@ -206,8 +203,24 @@ TEST(FeAgreement, WholeMeshPeriodOfTheShippedProblems) {
     }
   }
   EXPECT_LT(single.value, 0.03) << single.where;
-  EXPECT_LT(multi.value, 0.14) << multi.where;
+  EXPECT_LT(multi.value, 0.03) << multi.where;
   EXPECT_LT(share_error, 0.03);
+}
+
+// The coupling's share is fitted on these same positions; fitted on three
+// of the problems it predicts the fourth within 1 % (fe_calibration --fit
+// coupling). Here: switched off, the double-pair zone is far off again.
+TEST(FeAgreement, PairCouplingIsWhatClosesTheDoublePairZone) {
+  const std::vector<FeRow> rows = fe_rows("period.csv");
+  WorstError without;
+  for (const FeRow& r : rows) {
+    if (r["pairs"] != 2) continue;
+    Drive d = row_drive(r);
+    d.load.force *= r["load_fraction"];
+    d.effects.pair_coupling = false;
+    without.add(MeshStiffnessModel(d).at(r["travel_m"]).stiffness, r["K_fe"], r);
+  }
+  EXPECT_GT(without.value, 0.09) << without.where;
 }
 
 }  // namespace

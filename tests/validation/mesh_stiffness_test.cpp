@@ -4,6 +4,7 @@
 // uniform samples fall, load shares summing to one, and the coupled beam
 // giving the right limits.
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/pair_coupling.hpp"
 
 #include <gtest/gtest.h>
 
@@ -174,8 +175,13 @@ TEST(MeshStiffnessCurve, CoupledSolveMatchesDirectInverse) {
     for (const PairState& p : s.pairs) (p.load_share > 0 ? act : open).push_back(&p);
     const std::size_t n = act.size();
     ASSERT_GE(n, 1u);
+    // The beam's influence, and between adjacent pairs their own coupling.
     auto infl = [&](const PairState& a, const PairState& b) {
-      return a.segment == b.segment ? beam.influence(a.a, a.e, b.a, b.e) : 0.0;
+      double c = a.segment == b.segment ? beam.influence(a.a, a.e, b.a, b.e) : 0.0;
+      if (std::abs(a.rack_tooth - b.rack_tooth) == 1) {
+        c += adjacent_pair_coupling(a.fillet + a.rack_foundation, b.fillet + b.rack_foundation);
+      }
+      return c;
     };
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);
     for (std::size_t j = 0; j < n; ++j) {

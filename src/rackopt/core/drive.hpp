@@ -143,6 +143,9 @@ struct Effects {
   // docs/models/rack_foundation.md)
   bool rack_foundation = true;
   HertzModel hertz = HertzModel::kWeberBanaschek;
+  // Adjacent pairs load each other through the foundations of their teeth (FE-calibrated;
+  // docs/models/fe_calibration.md). Not with rack_span: per_pair (the papers' method).
+  bool pair_coupling = true;
   RackSpanModel rack_span = RackSpanModel::kCoupled;
   bool couple_term = true;         // couple e*F*cos(a0) of the axial force about the neutral axis
   bool body_axial = true;          // axial compliance of the rack body

@@ -67,7 +67,8 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
                                                        : "Weber-Banaschek (load dependent, plane stress)";
   o << "  effects: pinion tooth " << onoff(e.pinion_tooth) << " (root segment " << onoff(e.root_segment)
     << "), fillet foundation " << onoff(e.fillet_foundation) << ", rack tooth " << onoff(e.rack_tooth)
-    << " (foundation " << onoff(e.rack_foundation) << "), contact " << hertz << ",\n           rack span " << span;
+    << " (foundation " << onoff(e.rack_foundation) << "), contact " << hertz << ", pair coupling "
+    << onoff(e.pair_coupling) << ",\n           rack span " << span;
   if (e.rack_span != RackSpanModel::kRigid) {
     o << " [couple " << onoff(e.couple_term) << ", axial " << onoff(e.body_axial) << ", shear "
       << onoff(e.body_shear) << "]";

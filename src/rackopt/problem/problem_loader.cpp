@@ -880,7 +880,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   // --- effects
   const Block fx(top.get("effects"), "effects", "effects", top.mark(),
                  {"pinion_tooth", "root_segment", "fillet_foundation", "fillet_calibration", "rack_tooth",
-                  "rack_foundation", "hertz", "rack_span",
+                  "rack_foundation", "hertz", "pair_coupling", "rack_span",
                   "couple_term", "body_axial", "body_shear", "interference_limit", "spalling"});
   Effects& e = drive.effects;
   const Effects defaults;
@@ -890,6 +890,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   e.fillet_calibration = fx.flag("fillet_calibration", defaults.fillet_calibration);
   e.rack_tooth = fx.flag("rack_tooth", defaults.rack_tooth);
   e.rack_foundation = fx.flag("rack_foundation", defaults.rack_foundation);
+  e.pair_coupling = fx.flag("pair_coupling", defaults.pair_coupling);
   {
     const std::string h = fx.choice("hertz", {"off", "linear", "weber_banaschek"},
                                     defaults.hertz == HertzModel::kOff      ? "off"

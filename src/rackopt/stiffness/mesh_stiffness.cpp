@@ -16,6 +16,7 @@
 #include "rackopt/stiffness/curve_numerics.hpp"
 #include "rackopt/stiffness/loaded_contact.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
+#include "rackopt/stiffness/pair_coupling.hpp"
 #include "rackopt/stiffness/pinion_tooth.hpp"
 #include "rackopt/stiffness/profile_relief.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
@@ -238,6 +239,26 @@ struct MeshStiffnessModel::Impl {
     return cache.emplace(key, local_parts(s, i, j)).first->second;
   }
 
+  // Whether adjacent pairs load each other beyond the rack beam
+  // (effects.pair_coupling; not in the papers' per-pair method).
+  bool coupled_pairs() const {
+    return drive.effects.pair_coupling && drive.effects.rack_span != RackSpanModel::kPerPair;
+  }
+
+  // Off-diagonal compliance between pairs j and k: the rack beam's
+  // influence (coupled body, same segment) plus the pairs' own coupling
+  // through the foundations of adjacent teeth (pair_coupling.hpp).
+  double cross_compliance(const PairState& pj, const PairState& pk) const {
+    double c = 0;
+    if (drive.effects.rack_span == RackSpanModel::kCoupled && span_model && pj.segment == pk.segment) {
+      c += span_model->influence(pj.a, pj.e, pk.a, pk.e);
+    }
+    if (coupled_pairs() && std::abs(pj.rack_tooth - pk.rack_tooth) == 1) {
+      c += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation);
+    }
+    return c;
+  }
+
   // s of the pair on rack tooth j at travel X.
   double s_of(int j, double X) const { return A0 + j * pb - X * ca; }
   // Rack-fixed abscissa of that contact.
@@ -294,7 +315,6 @@ struct MeshStiffnessModel::Impl {
   void load_dependent_contact(MeshState& st, Parts&& parts_of) const {
     const std::size_t n = st.pairs.size();
     const double F = drive.load.force;
-    const bool coupled = drive.effects.rack_span == RackSpanModel::kCoupled && span_model;
     std::array<double, 64> C{};
     std::array<double, 8> gap{}, f{};
     std::array<ContactLaw, 8> law{};
@@ -307,8 +327,7 @@ struct MeshStiffnessModel::Impl {
     for (std::size_t j = 0; j < n; ++j) {
       const PairState& pj = st.pairs[j];
       for (std::size_t k = j + 1; k < n; ++k) {
-        const PairState& pk = st.pairs[k];
-        const double ck = coupled && pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        const double ck = cross_compliance(pj, st.pairs[k]);
         C[j * n + k] = ck;
         C[k * n + j] = ck;
       }
@@ -406,10 +425,9 @@ struct MeshStiffnessModel::Impl {
       const PairState& pj = st.pairs[j];
       gap[j] = pj.relief;
       C[j * n + j] = pj.local() + pj.body;
-      if (!coupled) continue;
+      if (!coupled && !coupled_pairs()) continue;
       for (std::size_t k = j + 1; k < n; ++k) {
-        const PairState& pk = st.pairs[k];
-        const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        const double c = cross_compliance(pj, st.pairs[k]);
         C[j * n + k] = c;
         C[k * n + j] = c;
       }
@@ -441,7 +459,8 @@ struct MeshStiffnessModel::Impl {
       return;
     }
     const RackSpanModel mode = drive.effects.rack_span;
-    if (mode == RackSpanModel::kRigid || !span_model) {
+    const bool rigid = mode == RackSpanModel::kRigid || !span_model;
+    if (rigid && (n == 1 || !coupled_pairs())) {
       for (PairState& p : st.pairs) {
         p.body = 0;
         p.load_share = (1.0 / p.local()) / st.local_stiffness;
@@ -449,7 +468,7 @@ struct MeshStiffnessModel::Impl {
       st.stiffness = st.local_stiffness;
       return;
     }
-    for (PairState& p : st.pairs) p.body = span_model->self(p.a, p.e);
+    for (PairState& p : st.pairs) p.body = rigid ? 0.0 : span_model->self(p.a, p.e);
     if (mode == RackSpanModel::kPerPair) {
       // Seed 000: the body compliance inside each pair, pairs in parallel.
       double k = 0;
@@ -458,7 +477,8 @@ struct MeshStiffnessModel::Impl {
       st.stiffness = k;
       return;
     }
-    // One beam shared by all pairs: C = diag(c_j) + C_b; K = 1^T C^-1 1.
+    // One beam shared by all pairs, and the pairs' own coupling:
+    // C = diag(c_j) + C_b + C_pairs; K = 1^T C^-1 1.
     // Contact is unilateral (physics.md 7.6): the beam can carry a contact
     // away from the pinion faster than the common approach, and that pair
     // then opens. Solve on the active set, dropping the most negative share
@@ -471,8 +491,7 @@ struct MeshStiffnessModel::Impl {
       const PairState& pj = st.pairs[j];
       C_full(j, j) = pj.local() + pj.body;
       for (std::size_t k = j + 1; k < n; ++k) {
-        const PairState& pk = st.pairs[k];
-        const double c = pj.segment == pk.segment ? span_model->influence(pj.a, pj.e, pk.a, pk.e) : 0.0;
+        const double c = cross_compliance(pj, st.pairs[k]);
         C_full(j, k) = c;
         C_full(k, j) = c;
       }

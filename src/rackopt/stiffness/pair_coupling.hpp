@@ -1,0 +1,28 @@
+// Coupling of two adjacent tooth pairs in mesh: a load on one tooth moves
+// its loaded neighbour, through the rack body under both teeth and the
+// pinion rim, which the pairs in parallel leave out. Against FE mesh
+// positions over whole mesh periods (tests/data/fe/period.csv) the pairs in
+// parallel are 9.5-12 % too stiff in the double-pair zone while each pair
+// alone agrees within 1 %.
+//
+// The cross compliance of pairs j and k (adjacent teeth) is taken as a
+// share of their foundations' compliances, the parts through which one
+// tooth's load reaches the other:
+//
+//   x_jk = kappa (f_j + f_k) / 2,   f = fillet foundation (with its
+//                                   calibration) + rack foundation,
+//
+// kappa fitted on the FE periods (docs/models/fe_calibration.md, "The
+// pairs' coupling"). Effect `effects.pair_coupling`; the rack beam's own
+// coupling (rack_span.hpp) is separate.
+#pragma once
+
+namespace rackopt {
+
+// kappa, dimensionless.
+double pair_coupling_share();
+
+// x_jk [m/N] from the two pairs' foundation compliances [m/N].
+double adjacent_pair_coupling(double foundations_j, double foundations_k);
+
+}  // namespace rackopt
