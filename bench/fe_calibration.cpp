@@ -55,7 +55,9 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
+#include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
+#include "rackopt/fe/rack_span_fe.hpp"
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/fillet_foundation.hpp"
@@ -185,6 +187,114 @@ std::vector<Job> period_jobs() {
     }
   }
   return jobs;
+}
+
+// A spread of designs over the range the model claims (z 12..40, pressure
+// angle 14..25 deg, profile shift -0.3..+0.5, modules 4..63 mm, with and
+// without undercut), at the same six positions of a mesh period as
+// period_jobs. Each design must pass the geometry checks of its base
+// problem; one that does not is recorded as skipped with the reason.
+std::vector<std::vector<std::string>> spread_designs_of(const std::string& base) {
+  if (base == "gantry_axis") {
+    return {{"pinion.teeth=12", "pinion.profile_shift=0.5"},
+            {"pinion.teeth=14"},                                                  // undercut
+            {"pinion.teeth=40", "pinion.profile_shift=-0.3", "pinion.pressure_angle=14 deg"},  // undercut
+            {"pinion.teeth=26", "pinion.profile_shift=0.2", "pinion.pressure_angle=25 deg"}};
+  }
+  if (base == "large_module") return {{"pinion.teeth=30", "pinion.profile_shift=-0.3", "pinion.pressure_angle=17 deg"}};
+  if (base == "rack_railway") return {{"pinion.teeth=18", "pinion.profile_shift=0.5"}};
+  if (base == "ship_lift") {
+    return {{"pinion.teeth=12", "pinion.profile_shift=0.3", "pinion.pressure_angle=25 deg", "pinion.tip_radius=0.3"},
+            {"pinion.teeth=40", "pinion.profile_shift=-0.2"},
+            {"pinion.teeth=16", "pinion.pressure_angle=14 deg"}};  // undercut
+  }
+  return {};
+}
+
+std::vector<Job> spread_jobs() {
+  std::vector<Job> jobs;
+  for (const char* p : {"gantry_axis", "large_module", "rack_railway", "ship_lift"}) {
+    for (const std::vector<std::string>& ov : spread_designs_of(p)) {
+      for (int k = 0; k < 6; ++k) {
+        const double f = (k + 0.5) / 6;
+        jobs.push_back({std::string(p) + "|" + join(ov, ";") + "|" + fmt(f), p, ov, f});
+      }
+    }
+  }
+  return jobs;
+}
+
+// The rack on its hinged supports: body depth and span varied on the gantry
+// axis (teeth tall and short against the body, spans of 16 and 32 pitches),
+// the pressure angle, and the shipped heavy racks, at mid-span (fraction 0)
+// and near the left hinge (fraction 1: the first position of the mid-span
+// phase whose loaded teeth and one each side lie on the span).
+std::vector<Job> supports_jobs() {
+  std::vector<Job> jobs;
+  auto add = [&](const std::string& p, const std::vector<std::string>& ov, bool hinge) {
+    jobs.push_back({p + "|" + join(ov, ";") + "|" + (hinge ? "1" : "0"), p, ov, hinge ? 1.0 : 0.0});
+  };
+  for (double depth : {12.0, 24.0, 48.0}) {
+    for (double span : {0.2, 0.4}) {
+      const std::vector<std::string> ov = {"rack.body_height=" + fmt(depth) + " mm", "rack.span=" + fmt(span) + " m"};
+      add("gantry_axis", ov, false);
+      if (span == 0.4) add("gantry_axis", ov, true);
+    }
+  }
+  for (double alpha : {14.0, 25.0}) {
+    add("gantry_axis", {"rack.body_height=24 mm", "rack.span=0.4 m", "pinion.pressure_angle=" + fmt(alpha) + " deg"},
+        false);
+  }
+  add("gantry_axis", {"rack.body_height=24 mm", "rack.span=0.4 m", "pinion.teeth=14"}, false);
+  add("rack_railway", {}, false);
+  add("rack_railway", {}, true);
+  add("rack_railway", {"rack.body_height=150 mm"}, false);
+  add("large_module", {}, false);
+  add("ship_lift", {}, false);
+  return jobs;
+}
+
+std::string supports_header() {
+  return "key,problem,design,module_m,face_width_m,force_N,span_m,body_depth_m,travel_m,a_first_m,pairs,K_fe,"
+         "load_fraction,shares_fe,level,elements,seconds";
+}
+
+std::string supports_row(const Job& j, FeOptions o) {
+  o.rack_on_supports = true;
+  const Drive d = fe_reference_drive(job_drive(j));
+  const MeshStiffnessModel coupled(rack_on_supports_drive(d, o));
+  const double p = coupled.geometry().rack.pitch;
+  double X = fe_positions(coupled, 4).front();
+  if (j.fraction > 0.5) {
+    // Near the left hinge: the first position of the same phase that the
+    // FE accepts (every design and placement check passes).
+    const double phase = X - std::floor(X / p) * p;
+    X = -1;
+    for (int k = 0; k < 40 && X < 0; ++k) {
+      FeOptions probe = o;
+      probe.ccx.program = "/nonexistent/ccx";
+      try {
+        fe_mesh_position(d, phase + k * p, probe);
+      } catch (const CcxNotFound&) {
+        X = phase + k * p;
+      } catch (const std::invalid_argument&) {
+      }
+    }
+    if (X < 0) throw DesignError("no_hinge_position", "no position near the left hinge keeps the teeth on the span");
+  }
+  const MeshState an = coupled.at(X);
+  const FePosition pos = fe_mesh_position(d, X, o);
+  std::string shares;
+  for (const FePair& q : pos.pairs) {
+    if (q.theoretical) shares += (shares.empty() ? "" : ";") + fmt(q.load_share);
+  }
+  std::ostringstream r;
+  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\"," << fmt(d.pinion.module) << ','
+    << fmt(fe_contact_width(d)) << ',' << fmt(d.load.force) << ',' << fmt(d.rack.span) << ','
+    << fmt(fe_rack_body_depth(d, o)) << ',' << fmt(X) << ',' << fmt(an.pairs.front().a) << ',' << an.pairs.size()
+    << ',' << fmt(pos.stiffness) << ',' << fmt(pos.load_fraction) << ",\"" << shares << "\"," << o.level << ','
+    << pos.elements << ',' << fmt(pos.seconds);
+  return r.str();
 }
 
 std::string period_header() {
@@ -668,11 +778,14 @@ int run(const Args& a) {
   } else if (a.set == "contact") {
     jobs = contact_jobs();
     header = contact_header();
-  } else if (a.set == "period") {
-    jobs = period_jobs();
+  } else if (a.set == "period" || a.set == "spread") {
+    jobs = a.set == "period" ? period_jobs() : spread_jobs();
     header = period_header();
+  } else if (a.set == "supports") {
+    jobs = supports_jobs();
+    header = supports_header();
   } else {
-    throw std::invalid_argument("--set must be rack, pinion, contact or period");
+    throw std::invalid_argument("--set must be rack, pinion, contact, period, spread or supports");
   }
   if (a.limit > 0 && static_cast<std::size_t>(a.limit) < jobs.size()) jobs.resize(static_cast<std::size_t>(a.limit));
   const std::string partial = a.out + ".partial";
@@ -698,7 +811,8 @@ int run(const Args& a) {
       std::string row;
       try {
         if (a.set == "contact") row = contact_row(j, o);
-        else if (a.set == "period") row = period_row(j, o);
+        else if (a.set == "period" || a.set == "spread") row = period_row(j, o);
+        else if (a.set == "supports") row = supports_row(j, o);
         else row = tooth_row(j, a.set == "rack" ? ToothMember::kRack : ToothMember::kPinion, o);
       } catch (const std::exception& e) {
         std::string what = e.what();
@@ -739,8 +853,10 @@ int run(const Args& a) {
                                                                                  " rev-parse --short HEAD 2>/dev/null")
         << "\n# FE: " << command_output("ccx -v 2>/dev/null | grep -i version | head -1")
         << "; Gmsh " << command_output("gmsh --version 2>&1 | head -1") << "; plane stress, level " << a.level << "\n"
-        << (a.set == "period" ? "# K in N/m (secant 0.2..1 of the last step), shares of the theoretical pairs "
+        << (a.set == "period" || a.set == "spread" ? "# K in N/m (secant 0.2..1 of the last step), shares of the theoretical pairs "
                                 "nearest the pinion tip first; skipped rows name the reason\n"
+            : a.set == "supports" ? "# rack on its hinged supports; K in N/m (secant 0.2..1 of the last step), "
+                                    "a_first = the first pair's abscissa from the left hinge; skipped rows name the reason\n"
             : a.set == "contact" ? "# compliances in m/N, K in N/m, the FE contact term = 1/K_fe - c_pinion_fe - c_rack_fe; "
                                  "skipped rows name the reason\n"
                                : "# compliances in units of 1/(E b) (columns *_Eb), lengths with _star in modules; "

@@ -4,9 +4,14 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
+#include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/pair_compliance.hpp"
+#include "rackopt/stiffness/pair_coupling.hpp"
+#include "rackopt/stiffness/rack_span.hpp"
 #include "test_drives.hpp"
 
 namespace rackopt {
@@ -113,6 +118,67 @@ TEST(Effects, LoadDependentHertzStiffensWithLoad) {
     }
     EXPECT_GT(c.k_mean, prev) << force;
     prev = c.k_mean;
+  }
+}
+
+}  // namespace
+}  // namespace rackopt
+
+namespace rackopt {
+namespace {
+
+// The load sharing with a load-dependent contact term is a fixed point: at
+// the forces f_j = F share_j, every loaded pair's contact sees the same
+// approach delta = F / K,
+//   (local_j + body_j) f_j + sum_k x_jk f_k = delta,
+// with each contact term the secant of its own force (PairCompliance::
+// contact at f_j) and x_jk the rack beam's influence plus the pairs' own
+// coupling; a pair that carries nothing is carried at least as far as
+// delta by the others. Checked over whole periods of the railway on its
+// supports, the rack rigid, and with the pairs' coupling off.
+TEST(Effects, LoadDependentSharingIsTheFixedPointOfEqualApproaches) {
+  for (int variant = 0; variant < 3; ++variant) {
+    Drive d = test::problem("rack_railway.yaml");
+    ASSERT_EQ(d.effects.hertz, HertzModel::kWeberBanaschek);
+    if (variant == 1) d.effects.rack_span = RackSpanModel::kRigid;
+    if (variant == 2) d.effects.pair_coupling = false;
+    d.numerics.positions_per_period = 40;
+    const MeshStiffnessModel model(d);
+    const MeshGeometry geo = build_mesh_geometry(d);
+    const PairCompliance pair(d, geo);
+    std::optional<RackSpanCompliance> span;
+    if (d.effects.rack_span == RackSpanModel::kCoupled) span.emplace(d.rack, d.pinion.pressure_angle, d.effects);
+    const double F = d.load.force;
+    int multi = 0;
+    for (const MeshState& s : model.curve().samples) {
+      const std::size_t n = s.pairs.size();
+      if (n < 2) continue;
+      ++multi;
+      const double delta = F / s.stiffness;
+      EXPECT_NEAR(s.approach, delta, 1e-12 * delta);
+      for (std::size_t j = 0; j < n; ++j) {
+        const PairState& pj = s.pairs[j];
+        const double fj = F * pj.load_share;
+        EXPECT_NEAR(pj.hertz, pair.contact(pj.s, fj), 1e-12 * pj.hertz) << "X " << s.travel;
+        double u = (pj.local() + pj.body) * fj;
+        for (std::size_t k = 0; k < n; ++k) {
+          if (k == j) continue;
+          const PairState& pk = s.pairs[k];
+          double x = 0;
+          if (span && pj.segment == pk.segment) x += span->influence(pj.a, pj.e, pk.a, pk.e);
+          if (d.effects.pair_coupling && std::abs(pj.rack_tooth - pk.rack_tooth) == 1) {
+            x += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation);
+          }
+          u += x * F * pk.load_share;
+        }
+        if (pj.load_share > 0) {
+          EXPECT_NEAR(u, delta, 1e-8 * delta) << "variant " << variant << " X " << s.travel << " pair " << j;
+        } else {
+          EXPECT_GE(u, delta * (1 - 1e-8)) << "variant " << variant << " X " << s.travel << " pair " << j;
+        }
+      }
+    }
+    EXPECT_GT(multi, 100) << variant;
   }
 }
 

@@ -270,6 +270,7 @@ struct MeshStiffnessModel::Impl {
   MeshState state(double X, int side, Parts&& parts_of) const {
     MeshState st;
     st.travel = X;
+    std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
     const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
@@ -295,11 +296,87 @@ struct MeshStiffnessModel::Impl {
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
       p.hertz = lp.contact.at(drive.load.force);
+      if (st.pairs.size() < 2) law2[st.pairs.size()] = lp.contact;
       st.pairs.push_back(p);
+    }
+    if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
+        st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2)) {
+      return st;
     }
     solve(st);
     if (pair.contact_depends_on_force() && st.pairs.size() > 1) load_dependent_contact(st, parts_of);
     return st;
+  }
+
+  // The double-pair zone with a load-dependent contact term and no relief
+  // gap, the common case of every curve: the same fixed point as
+  // load_dependent_contact, solved as one equation in the first pair's
+  // force. With d_j(f) = (a_j + c_j(f)) f the approach of pair j alone (a_j
+  // its force-independent compliance, body included) and x the pairs' cross
+  // compliance, both pairs see the same approach when
+  //   g(f1) = d_1(f1) - d_2(F - f1) + x (F - 2 f1) = 0,
+  // and g rises with f1 (g' = t_1 + t_2 - 2x, the tangent compliances, > 0
+  // for a positive definite pair). g(0) >= 0 means the first pair opens,
+  // g(F) <= 0 the second. Newton from the linear solution, kept inside its
+  // bracket. Returns false (the caller takes the general path) when the
+  // pair matrix is not positive definite.
+  bool two_pairs_load_dependent(MeshState& st, const std::array<ContactLaw, 2>& law) const {
+    PairState& p1 = st.pairs[0];
+    PairState& p2 = st.pairs[1];
+    const double F = drive.load.force;
+    const RackSpanModel mode = drive.effects.rack_span;
+    const bool rigid = mode == RackSpanModel::kRigid || !span_model;
+    p1.body = rigid ? 0.0 : span_model->self(p1.a, p1.e);
+    p2.body = rigid ? 0.0 : span_model->self(p2.a, p2.e);
+    const double x = cross_compliance(p1, p2);
+    const double a1 = p1.local() - p1.hertz + p1.body, a2 = p2.local() - p2.hertz + p2.body;
+    // state() left each contact term at the whole force F.
+    const double c1F = p1.hertz, c2F = p2.hertz;
+    const double c1_0 = law[0].at(0), c2_0 = law[1].at(0);
+    // g(0) = x F - d_2(F), g(F) = d_1(F) - x F.
+    const double g0 = x * F - (a2 + c2F) * F, gF = (a1 + c1F) * F - x * F;
+    if (!(gF > g0)) return false;
+    double f1;
+    if (g0 >= 0) {
+      f1 = 0;
+    } else if (gF <= 0) {
+      f1 = F;
+    } else {
+      // Start: the linear solution with each term at half the load.
+      const double c1 = a1 + law[0].at(0.5 * F), c2 = a2 + law[1].at(0.5 * F);
+      const double den = c1 + c2 - 2 * x;
+      if (!(den > 0)) return false;
+      f1 = std::clamp(F * (c2 - x) / den, 0.0, F);
+      double lo = 0, hi = F;
+      for (int it = 0; it < 60; ++it) {
+        const double f2 = F - f1;
+        const double c1f = f1 > law[0].floor ? law[0].at(f1) : c1_0;
+        const double c2f = f2 > law[1].floor ? law[1].at(f2) : c2_0;
+        const double gv = (a1 + c1f) * f1 - (a2 + c2f) * f2 + x * (F - 2 * f1);
+        if (gv < 0) lo = f1;
+        else hi = f1;
+        const double slope = a1 + c1f - law[0].slope_at(f1) + a2 + c2f - law[1].slope_at(f2) - 2 * x;
+        double next = slope > 0 ? f1 - gv / slope : 0.5 * (lo + hi);
+        if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);  // keep the bracket
+        const double step = std::abs(next - f1);
+        f1 = next;
+        // Newton's error squares each step: a step of 1e-9 F leaves about
+        // 1e-18 F (as load_dependent_contact).
+        if (step <= 1e-9 * F) break;
+      }
+    }
+    const double f2 = F - f1;
+    p1.hertz = law[0].at(f1);
+    p2.hertz = law[1].at(f2);
+    // The common approach, from the loaded pair(s).
+    const double approach = f1 > 0 ? (a1 + p1.hertz) * f1 + x * f2 : (a2 + p2.hertz) * f2 + x * f1;
+    if (!(approach > 0) || !std::isfinite(approach)) return false;
+    st.approach = approach;
+    st.stiffness = F / approach;
+    p1.load_share = f1 / F;
+    p2.load_share = f2 / F;
+    st.local_stiffness = 1.0 / p1.local() + 1.0 / p2.local();
+    return true;
   }
 
   // The contact term depends on each pair's force, and the forces on the
@@ -496,10 +573,10 @@ struct MeshStiffnessModel::Impl {
         C_full(k, j) = c;
       }
     }
-    std::vector<std::size_t> active(n);
+    std::array<std::size_t, 8> active{};
+    std::size_t m = n;
     for (std::size_t j = 0; j < n; ++j) active[j] = j;
     for (;;) {
-      const std::size_t m = active.size();
       Mat C(m, m);
       for (std::size_t a = 0; a < m; ++a) {
         for (std::size_t b = 0; b < m; ++b) C(a, b) = C_full(active[a], active[b]);
@@ -520,7 +597,8 @@ struct MeshStiffnessModel::Impl {
         for (std::size_t a = 0; a < m; ++a) st.pairs[active[a]].load_share = std::max(f[a], 0.0) / K;
         return;
       }
-      active.erase(active.begin() + static_cast<std::ptrdiff_t>(worst));
+      for (std::size_t a = worst; a + 1 < m; ++a) active[a] = active[a + 1];
+      --m;
     }
   }
 

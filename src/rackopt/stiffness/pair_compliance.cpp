@@ -85,21 +85,24 @@ PairCompliance::PairCompliance(const Drive& drive, const MeshGeometry& geo) : im
   if (fx.pinion_tooth) im.pinion.emplace(geo, drive.pinion, fx, drive.numerics);
   if (fx.fillet_foundation) {
     im.fillet.emplace(geo, drive.pinion);
-    if (im.fillet->outside_fitted_range()) {
+    if (fx.fillet_calibration) im.fillet_calibration.emplace(geo, drive.pinion);
+    // Sainsot's table extrapolated in theta_f is what the FE calibration was
+    // fitted on top of: inside the calibration's range only h_f counts.
+    const bool calibrated = im.fillet_calibration && !im.fillet_calibration->outside_fitted_range();
+    const double h_f = im.fillet->h_f();
+    if (calibrated ? (h_f < 1.4 || h_f > 7.0) : im.fillet->outside_fitted_range()) {
       std::ostringstream w;
-      w << "fillet foundation: (h_f, theta_f) = (" << im.fillet->h_f() << ", " << im.fillet->theta_f()
-        << " rad) is outside the fitted range of Sainsot's table (1.4..7, 0.01..0.12 rad); extrapolated";
+      w << "fillet foundation: (h_f, theta_f) = (" << h_f << ", " << im.fillet->theta_f()
+        << " rad) is outside the fitted range of Sainsot's table (1.4..7, 0.01..0.12 rad"
+        << (calibrated ? ", theta_f covered by the FE calibration" : "") << "); extrapolated";
       im.warnings.push_back(w.str());
     }
-    if (fx.fillet_calibration) {
-      im.fillet_calibration.emplace(geo, drive.pinion);
-      if (im.fillet_calibration->outside_fitted_range()) {
-        std::ostringstream w;
-        w << "fillet calibration: theta_f = " << im.fillet_calibration->theta_f()
-          << " rad or the pressure angle lies outside the FE-calibrated range (theta_f 0.06..0.26 rad, "
-             "14..25 deg); extrapolated";
-        im.warnings.push_back(w.str());
-      }
+    if (im.fillet_calibration && im.fillet_calibration->outside_fitted_range()) {
+      std::ostringstream w;
+      w << "fillet calibration: theta_f = " << im.fillet_calibration->theta_f()
+        << " rad or the pressure angle lies outside the FE-calibrated range (theta_f 0.06..0.26 rad, "
+           "14..25 deg); extrapolated";
+      im.warnings.push_back(w.str());
     }
   }
   if (fx.rack_tooth) im.rack.emplace(geo, drive.rack, b_rack, drive.numerics);
