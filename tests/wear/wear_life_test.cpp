@@ -113,12 +113,13 @@ TEST(WearLife, BandAverageKeepsConstantLoadExact) {
 
 // The pair loads are the tooth models' rigid-body shares (physics.md 7.6), not
 // an equal split: compare with MeshStiffnessModel (an independent assembly of
-// the same tooth models) with a rigid rack body.
-TEST(WearLife, LoadSharingMatchesTheStiffnessModel) {
+// the same tooth models and the same pairs' coupling) with a rigid rack body,
+// the coupling on (the default) and off.
+void expect_load_sharing_matches_the_stiffness_model(bool pair_coupling) {
+  SCOPED_TRACE(pair_coupling ? "pair coupling on" : "pair coupling off");
   Drive d = test::ship_lift_wear();
   d.effects.rack_span = RackSpanModel::kRigid;
-  // The wear model's sharing has no off-diagonal terms yet (docs/models/wear.md).
-  d.effects.pair_coupling = false;
+  d.effects.pair_coupling = pair_coupling;
   const WearModel model(d, WearOptions{.hertz_band = false});
   const WearModel::PassWear pw = model.initial_wear_per_pass();
   const MeshStiffnessModel mesh(d);
@@ -141,6 +142,28 @@ TEST(WearLife, LoadSharingMatchesTheStiffnessModel) {
   }
   EXPECT_GT(checked, 50);
   EXPECT_GT(unequal, 10);  // double contact is not shared equally
+}
+
+TEST(WearLife, LoadSharingMatchesTheStiffnessModel) {
+  expect_load_sharing_matches_the_stiffness_model(true);
+  expect_load_sharing_matches_the_stiffness_model(false);
+}
+
+// The pairs' coupling reaches the wear model through the same effect: the
+// double-contact loads move when it is switched off.
+TEST(WearLife, PairCouplingMovesTheDoubleContactLoads) {
+  Drive d = test::ship_lift_wear();
+  ASSERT_TRUE(d.effects.pair_coupling);
+  const WearModel::PassWear on = WearModel(d, WearOptions{.hertz_band = false}).initial_wear_per_pass();
+  d.effects.pair_coupling = false;
+  const WearModel::PassWear off = WearModel(d, WearOptions{.hertz_band = false}).initial_wear_per_pass();
+  ASSERT_EQ(on.load_per_width.size(), off.load_per_width.size());
+  double largest = 0, w = 0;
+  for (std::size_t i = 0; i < on.load_per_width.size(); ++i) {
+    largest = std::max(largest, std::abs(on.load_per_width[i] - off.load_per_width[i]));
+    w = std::max(w, off.load_per_width[i]);
+  }
+  EXPECT_GT(largest, 1e-3 * w);
 }
 
 // Archard: life is proportional to 1/K (six decades) and to H, exactly, even

@@ -11,6 +11,7 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
+#include "rackopt/stiffness/pair_coupling.hpp"
 #include "rackopt/wear/contact.hpp"
 #include "rackopt/wear/hardness.hpp"
 
@@ -108,6 +109,9 @@ struct Path {
   std::vector<int> pos_begin;
   std::vector<double> node_c;     // LOA coordinate of each load node
   std::vector<double> node_comp;  // local compliance of that pair [m/N]
+  // Cross compliance of that pair and the next of its position (adjacent
+  // teeth), 0 for the last pair or without effects.pair_coupling [m/N].
+  std::vector<double> node_cross;
   // Load nodes grouped by pair and zone into intervals of the path, sorted along s.
   std::vector<std::vector<int>> intervals;
   // Band-averaging weights per member (CSR): <w>_i = sum_k val[k] P[idx[k]].
@@ -175,6 +179,10 @@ struct WearModel::Impl {
   std::vector<double> cp;
   double cr_dy = 0;
   std::vector<double> cr;
+  // The foundations alone (pinion fillet foundation against s, rack tooth
+  // foundation against height), for the pairs' coupling.
+  std::vector<double> fp, fr;
+  bool coupled_pairs = false;  // effects.pair_coupling, as the mesh model reads it
   std::optional<PairCompliance> pair;
 
   std::array<HardnessModel, 2> hardness;
@@ -267,7 +275,10 @@ struct WearModel::Impl {
     cp_ds = (s_end - cp_lo) / n;
     cp.resize(n + 1);
     cr.assign(n + 1, 0.0);
+    fp.assign(n + 1, 0.0);
+    fr.assign(n + 1, 0.0);
     cr_dy = rack_height / n;
+    coupled_pairs = drive.effects.pair_coupling && drive.effects.rack_span != RackSpanModel::kPerPair;
     for (int k = 0; k <= n; ++k) {
       // The top node is evaluated exactly at s_end (the tooth model rejects
       // radii beyond the tip, and rounding could put k*ds past it).
@@ -275,6 +286,8 @@ struct WearModel::Impl {
       const PairTeeth t = pair->teeth_at(s, k * cr_dy, b);
       cp[k] = t.pinion.total() + t.fillet;
       cr[k] = t.rack.total() + t.rack_foundation;
+      fp[k] = t.fillet;
+      fr[k] = t.rack_foundation;
     }
   }
 
@@ -295,32 +308,123 @@ struct WearModel::Impl {
   double teeth_compliance(double s, double clearance) const {
     return lerp_table(cp, cp_lo, cp_ds, s) + lerp_table(cr, 0.0, cr_dy, rack_height_at(s, clearance));
   }
+  double foundations(double s, double clearance) const {
+    return lerp_table(fp, cp_lo, cp_ds, s) + lerp_table(fr, 0.0, cr_dy, rack_height_at(s, clearance));
+  }
+
   // The local pair compliances of the pairs in mesh at one position (nodes
-  // c[0..n)), the contact term at each pair's force under the unworn load
-  // sharing (rigid rack body, pairs in parallel). A force-dependent contact
-  // term makes that a fixed point: the term moves with ln(force), so each
-  // step shrinks the error by a small factor and a few steps from equal
-  // shares settle it. As the flanks wear the shares move, and the contact
-  // term with them only through that logarithm: it is kept at its unworn value.
-  void position_compliances(const double* c, int n, double clearance, double* out) const {
-    std::array<double, 16> teeth{};
+  // c[0..n), out) and the cross compliances of neighbours (cross[j] between
+  // pairs j and j + 1: the pairs' coupling of the mesh model,
+  // stiffness/pair_coupling.hpp), the contact term at each pair's force
+  // under the unworn load sharing (rigid rack body). A force-dependent
+  // contact term makes that a fixed point: the term moves with ln(force),
+  // so each step shrinks the error by a small factor and a few steps from
+  // equal shares settle it. As the flanks wear the shares move, and the
+  // contact term with them only through that logarithm: it is kept at its
+  // unworn value.
+  void position_compliances(const double* c, int n, double clearance, double* out, double* cross) const {
+    std::array<double, 16> teeth{}, f{}, zero{};
     if (n > static_cast<int>(teeth.size())) throw std::runtime_error("wear: more than 16 pairs in mesh");
     for (int j = 0; j < n; ++j) {
       teeth[j] = teeth_compliance(c[j], clearance);
       out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
+      cross[j] = 0;
+      if (coupled_pairs && j > 0) {
+        cross[j - 1] = adjacent_pair_coupling(foundations(c[j - 1], clearance), foundations(c[j], clearance));
+      }
     }
     if (!pair->contact_depends_on_force() || n == 1) return;
     for (int it = 0; it < 8; ++it) {
-      double k = 0;
-      for (int j = 0; j < n; ++j) k += 1.0 / out[j];
+      share_loads(out, cross, zero.data(), n, force, f.data());
       double change = 0;
       for (int j = 0; j < n; ++j) {
-        const double fj = force * (1.0 / out[j]) / k;
-        const double cj = teeth[j] + pair->contact(c[j], fj, b, rack_height_at(c[j], clearance));
+        const double cj = teeth[j] + pair->contact(c[j], f[j], b, rack_height_at(c[j], clearance));
         change = std::max(change, std::abs(cj - out[j]) / cj);
         out[j] = cj;
       }
       if (change < 1e-9) break;
+    }
+  }
+
+  // Unilateral load sharing of the n pairs of one position: compliances
+  // c[j], neighbour cross compliances x[j] (pairs j, j + 1), gaps e[j].
+  // f = C^-1 (delta 1 - e) on the active set, sum f = F, f >= 0; returns
+  // delta and writes f. Without coupling the active set is a prefix in the
+  // order of increasing gap (exact); with it C is tridiagonal and the pair
+  // with the most negative force leaves the active set until none is
+  // negative, as the mesh model does.
+  static double share_loads(const double* c, const double* x, const double* e, int n, double F, double* f) {
+    bool any_cross = false;
+    for (int j = 0; j + 1 < n; ++j) any_cross = any_cross || x[j] != 0;
+    if (!any_cross) {
+      std::array<int, 16> order{};
+      for (int j = 0; j < n; ++j) order[j] = j;
+      std::sort(order.begin(), order.begin() + n, [&](int p, int q) { return e[p] < e[q]; });
+      double delta = 0;
+      for (int m = n; m >= 1; --m) {
+        double sk = 0, se = 0;
+        for (int q = 0; q < m; ++q) {
+          const double kk = 1.0 / c[order[q]];
+          sk += kk;
+          se += e[order[q]] * kk;
+        }
+        delta = (F + se) / sk;
+        if (m == 1 || delta > e[order[m - 1]]) break;
+      }
+      for (int j = 0; j < n; ++j) f[j] = std::max(delta - e[j], 0.0) / c[j];
+      return delta;
+    }
+    std::array<int, 16> act{};
+    int m = n;
+    for (int j = 0; j < n; ++j) act[j] = j;
+    for (;;) {
+      // Tridiagonal in the active order: a neighbour is coupled only when
+      // the two pairs are neighbours in mesh. Thomas for C u = 1, C v = e;
+      // f = delta u - v with sum f = F.
+      std::array<double, 16> sub{}, diag{}, sup{}, u{}, v{};
+      for (int a = 0; a < m; ++a) {
+        diag[a] = c[act[a]];
+        sup[a] = a + 1 < m && act[a + 1] == act[a] + 1 ? x[act[a]] : 0.0;
+        sub[a] = a > 0 && act[a] == act[a - 1] + 1 ? x[act[a - 1]] : 0.0;
+        u[a] = 1;
+        v[a] = e[act[a]];
+      }
+      for (int a = 1; a < m; ++a) {
+        const double w = sub[a] / diag[a - 1];
+        diag[a] -= w * sup[a - 1];
+        u[a] -= w * u[a - 1];
+        v[a] -= w * v[a - 1];
+      }
+      for (int a = m - 1; a >= 0; --a) {
+        if (a + 1 < m) {
+          u[a] -= sup[a] * u[a + 1];
+          v[a] -= sup[a] * v[a + 1];
+        }
+        u[a] /= diag[a];
+        v[a] /= diag[a];
+      }
+      double su = 0, sv = 0;
+      for (int a = 0; a < m; ++a) {
+        su += u[a];
+        sv += v[a];
+      }
+      const double delta = (F + sv) / su;
+      int worst = -1;
+      double worst_f = 0;
+      for (int a = 0; a < m; ++a) {
+        const double fa = delta * u[a] - v[a];
+        if (fa < worst_f) {
+          worst_f = fa;
+          worst = a;
+        }
+      }
+      if (worst < 0 || m == 1) {
+        for (int j = 0; j < n; ++j) f[j] = 0;
+        for (int a = 0; a < m; ++a) f[act[a]] = std::max(delta * u[a] - v[a], 0.0);
+        return delta;
+      }
+      for (int a = worst; a + 1 < m; ++a) act[a] = act[a + 1];
+      --m;
     }
   }
 
@@ -361,8 +465,9 @@ struct WearModel::Impl {
           p.node_c.push_back(c);
         }
         p.node_comp.resize(p.node_c.size());
+        p.node_cross.resize(p.node_c.size());
         const int a = p.pos_begin.back();
-        position_compliances(&p.node_c[a], pc.pairs, clearance, &p.node_comp[a]);
+        position_compliances(&p.node_c[a], pc.pairs, clearance, &p.node_comp[a], &p.node_cross[a]);
         p.pos_begin.push_back(static_cast<int>(p.node_c.size()));
       }
       for (int j = 0; j < pc.pairs; ++j) {
@@ -489,37 +594,35 @@ struct WearModel::Impl {
   }
 
   // Unilateral load sharing at every sampled mesh position (rigid rack body,
-  // physics.md 7.6): f_j = (delta - e_j)/c_j on the active set, sum f = F.
-  // Writes each pair's signed margin (delta - e_j)/(c_j b) [N/m]: the load
-  // per width where >= 0, negative where the pair is open. Returns the loaded
+  // physics.md 7.6; share_loads). Writes each pair's signed margin: its load
+  // per width f_j / b where it carries load, and where it is open the
+  // (negative) approach it lacks over its compliance,
+  // (delta - e_j - sum_k x_jk f_k) / (c_j b) [N/m]. Returns the loaded
   // contact ratio (path length over which a pair carries load / p_b).
   double solve(const Path& p, const std::vector<double>& hp, const std::vector<double>& hr, double F,
                std::vector<double>& margin) const {
     margin.resize(p.node_c.size());
     const int npos = static_cast<int>(p.pos_begin.size()) - 1;
-    std::array<double, 16> e{};
-    std::array<int, 16> order{};
+    std::array<double, 16> e{}, f{};
     for (int k = 0; k < npos; ++k) {
       const int a = p.pos_begin[k], n = p.pos_begin[k + 1] - a;
       for (int j = 0; j < n; ++j) {
         const double c = p.node_c[a + j];
         e[j] = interp_profile(p, hp, c) + interp_profile(p, hr, c);
-        order[j] = j;
       }
-      std::sort(order.begin(), order.begin() + n, [&](int x, int y) { return e[x] < e[y]; });
-      // The active set is a prefix in the order of increasing gap.
-      double delta = 0;
-      for (int m = n; m >= 1; --m) {
-        double sk = 0, se = 0;
-        for (int q = 0; q < m; ++q) {
-          const double kk = 1.0 / p.node_comp[a + order[q]];
-          sk += kk;
-          se += e[order[q]] * kk;
+      const double* cj = &p.node_comp[a];
+      const double* xj = &p.node_cross[a];
+      const double delta = share_loads(cj, xj, e.data(), n, F, f.data());
+      for (int j = 0; j < n; ++j) {
+        if (f[j] > 0) {
+          margin[a + j] = f[j] / b;
+          continue;
         }
-        delta = (F + se) / sk;
-        if (m == 1 || delta > e[order[m - 1]]) break;
+        double carried = 0;  // how far the loaded neighbours carry this contact
+        if (j > 0) carried += xj[j - 1] * f[j - 1];
+        if (j + 1 < n) carried += xj[j] * f[j + 1];
+        margin[a + j] = (delta - e[j] - carried) / (cj[j] * b);
       }
-      for (int j = 0; j < n; ++j) margin[a + j] = (delta - e[j]) / (p.node_comp[a + j] * b);
     }
     double loaded = 0;
     for (const auto& iv : p.intervals) {
