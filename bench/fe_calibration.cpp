@@ -33,6 +33,7 @@
 // position with its two single-tooth solves) on a variant of a shipped
 // problem, given by --set-style overrides in the `design` column.
 #include <algorithm>
+#include <cstdlib>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -63,6 +64,8 @@
 #include "rackopt/stiffness/fillet_foundation.hpp"
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/stiffness/supported_rack.hpp"
+#include "rackopt/geometry/mesh_geometry.hpp"
 
 namespace {
 
@@ -763,12 +766,167 @@ int fit_coupling(const std::string& path) {
   return 0;
 }
 
+// The rack on its supports: the analytic coupled model on the FE body
+// against the FE mesh positions of a supports data file, as is and with a
+// candidate law: a tooth layer of beta times the tooth height added on top
+// of the beam's section, and the rack foundation taken at k_depth root thicknesses below the
+// body depth (the held-base calibration counts the body down to its held
+// base, which the beam counts again).
+struct SupportsSample {
+  std::string problem, design;
+  Drive drive;  // the FE body's coupled beam, at the FE's force
+  double X = 0, k_fe = 0, tooth_height = 0, depth = 0;
+  std::string shares;
+};
+
+// The law with explicit beta and k_depth on a drive whose own
+// effects.supported_rack is off (stiffness/supported_rack.hpp).
+Drive with_supported_rack_law(Drive d, double depth, double tooth_height, double beta, double k_depth) {
+  const double S = 2 * build_mesh_geometry(d).rack.half_thickness_at_root;
+  d.effects.supported_rack = false;
+  d.rack = rack_with_tooth_layer(d.rack, tooth_height, d.rack.section.area / depth, beta);
+  // The section is explicit: body_height is what the foundation reads.
+  d.rack.body_height = supported_foundation_depth(depth, S, k_depth);
+  return d;
+}
+
+int fit_supports(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::vector<SupportsSample> rows;
+  std::vector<std::string> header;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = split_csv(line);
+    if (f[0] == "key") {
+      header = f;
+      continue;
+    }
+    if (f.size() != header.size()) continue;
+    auto col = [&](const char* name) {
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == name) return std::stod(f.at(i));
+      }
+      throw std::runtime_error(std::string("no column ") + name + " in " + path);
+    };
+    Job j;
+    j.problem = f[1];
+    std::stringstream ss(f[2]);
+    for (std::string t; std::getline(ss, t, ';');) {
+      if (!t.empty()) j.overrides.push_back(t);
+    }
+    FeOptions on;
+    on.rack_on_supports = true;
+    SupportsSample r;
+    r.problem = f[1];
+    r.design = f[2];
+    const Drive ref = fe_reference_drive(job_drive(j));
+    r.drive = rack_on_supports_drive(ref, on);
+    r.drive.effects.supported_rack = false;
+    r.drive.effects.rack_foundation = true;
+    r.drive.effects.fillet_calibration = true;
+    r.drive.load.force *= col("load_fraction");
+    r.depth = col("body_depth_m");
+    r.tooth_height = (r.drive.rack.addendum_coef + r.drive.rack.dedendum_coef) * r.drive.pinion.module;
+    r.X = col("travel_m");
+    r.k_fe = col("K_fe");
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == "shares_fe") r.shares = f[i];
+    }
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == "shares_fe") r.shares = f[i];
+    }
+    rows.push_back(r);
+  }
+  auto k_of = [](const SupportsSample& r, double beta, double k_depth) {
+    try {
+      return MeshStiffnessModel(with_supported_rack_law(r.drive, r.depth, r.tooth_height, beta, k_depth)).at(r.X).stiffness;
+    } catch (const DesignError&) {
+      return double(INFINITY);  // the foundation law left its ground
+    }
+  };
+  std::printf("| problem | design | X | K FE | K analytic | FE/analytic |\n");
+  for (const SupportsSample& r : rows) {
+    const double k = MeshStiffnessModel(r.drive).at(r.X).stiffness;
+    std::printf("| %s | %s | %.4f | %.4g | %.4g | %.3f |\n", r.problem.c_str(), r.design.c_str(), r.X, r.k_fe, k,
+                r.k_fe / k);
+  }
+  auto worst = [&](double beta, double k_depth, const std::function<bool(const SupportsSample&)>& use) {
+    double w = 0;
+    for (const SupportsSample& r : rows) {
+      if (use(r)) w = std::max(w, std::abs(k_of(r, beta, k_depth) / r.k_fe - 1));
+    }
+    return w;
+  };
+  auto best = [&](const std::function<bool(const SupportsSample&)>& use, double* b_out, double* g_out) {
+    double wb = INFINITY;
+    for (int ib = 0; ib <= 30; ++ib) {
+      for (int ig = 0; ig <= 18; ++ig) {
+        const double b = 0.02 * ib, g = 0.55 + 0.1 * ig;
+        const double e = worst(b, g, use);
+        if (e < wb) {
+          wb = e;
+          *b_out = b;
+          *g_out = g;
+        }
+      }
+    }
+    return wb;
+  };
+  const auto all = [](const SupportsSample&) { return true; };
+  double beta = 0, k_depth = 3;
+  const double w = best(all, &beta, &k_depth);
+  std::printf("// %zu positions; as is: largest K error %.4f; tooth layer beta = %.2f, foundation depth k = %.2f root thicknesses: %.4f\n",
+              rows.size(), worst(0, 100, all), beta, k_depth, w);
+  for (double g : {100.0, k_depth}) {
+    double bb = 0, wb = INFINITY;
+    for (int ib = 0; ib <= 30; ++ib) {
+      const double e = worst(0.02 * ib, g, all);
+      if (e < wb) {
+        wb = e;
+        bb = 0.02 * ib;
+      }
+    }
+    std::printf("// k_depth fixed at %.2f: best beta %.2f, largest K error %.4f\n", g, bb, wb);
+  }
+  for (const SupportsSample& r : rows) {
+    std::string shares;
+    try {
+      const MeshState st =
+          MeshStiffnessModel(with_supported_rack_law(r.drive, r.depth, r.tooth_height, beta, k_depth)).at(r.X);
+      for (const PairState& q : st.pairs) shares += (shares.empty() ? "" : ";") + fmt(q.load_share);
+    } catch (const DesignError&) {
+    }
+    std::printf("//   %s %s X %.4f: error %+.4f, shares %s (FE %s)\n", r.problem.c_str(), r.design.c_str(), r.X,
+                k_of(r, beta, k_depth) / r.k_fe - 1, shares.c_str(), r.shares.c_str());
+  }
+  for (const SupportsSample& r : rows) {
+    // The beta that alone would match this row at the fitted depth.
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 40; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (k_of(r, mid, k_depth) < r.k_fe ? lo : hi) = mid;
+    }
+    std::printf("//   %s %s X %.4f: beta alone %.3f\n", r.problem.c_str(), r.design.c_str(), r.X, 0.5 * (lo + hi));
+  }
+  std::set<std::string> designs;
+  for (const SupportsSample& r : rows) designs.insert(r.problem + "|" + r.design);
+  for (const std::string& dsg : designs) {
+    double b = 0, g = 3;
+    best([&](const SupportsSample& r) { return r.problem + "|" + r.design != dsg; }, &b, &g);
+    std::printf("// %s left out: beta %.2f k_depth %.2f, on it: largest K error %.4f\n", dsg.c_str(), b, g,
+                worst(b, g, [&](const SupportsSample& r) { return r.problem + "|" + r.design == dsg; }));
+  }
+  return 0;
+}
+
 int run(const Args& a) {
   if (!a.fit.empty()) {
     if (a.fit == "coupling") return fit_coupling(a.fit_file);
     if (a.fit == "rack") return fit_rack(a.fit_file);
     if (a.fit == "pinion") return fit_pinion(a.fit_file);
-    throw std::invalid_argument("--fit must be rack, pinion or coupling");
+    if (a.fit == "supports") return fit_supports(a.fit_file);
+    throw std::invalid_argument("--fit must be rack, pinion, coupling or supports");
   }
   std::vector<Job> jobs;
   std::string header;

@@ -12,6 +12,7 @@
 #include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/pair_coupling.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
+#include "rackopt/stiffness/supported_rack.hpp"
 #include "test_drives.hpp"
 
 namespace rackopt {
@@ -44,7 +45,10 @@ TEST(Effects, OffChangesOnlyItsComponent) {
       {"couple_term", [](Effects& e) { e.couple_term = false; }, false, false, false, false, true},
       {"body_shear", [](Effects& e) { e.body_shear = false; }, false, false, false, false, true},
       {"body_axial", [](Effects& e) { e.body_axial = false; }, false, false, false, false, true},
-      {"rack_span", [](Effects& e) { e.rack_span = RackSpanModel::kRigid; }, false, false, false, false, true},
+      // The rack foundation is local on supports (supported_rack.hpp): a
+      // rigid body brings back the held-base foundation.
+      {"rack_span", [](Effects& e) { e.rack_span = RackSpanModel::kRigid; }, false, false, false, false, true, true},
+      {"supported_rack", [](Effects& e) { e.supported_rack = false; }, false, false, false, false, true, true},
       {"fillet_calibration", [](Effects& e) { e.fillet_calibration = false; }, false, true, false, false, false},
       {"rack_foundation", [](Effects& e) { e.rack_foundation = false; }, false, false, false, false, false, true},
   };
@@ -71,8 +75,9 @@ TEST(Effects, OffChangesOnlyItsComponent) {
                   p.rack_foundation != q.rack_foundation;
       }
       // Removing a compliance never makes the mesh softer; removing the
-      // fillet calibration (a stiffening) never makes it stiffer.
-      if (std::string(c.name) == "fillet_calibration") {
+      // fillet calibration or the supported rack's corrections (stiffenings)
+      // never makes it stiffer.
+      if (std::string(c.name) == "fillet_calibration" || std::string(c.name) == "supported_rack") {
         EXPECT_LE(b.stiffness, a.stiffness * (1 + 1e-12));
       } else {
         EXPECT_GE(b.stiffness, a.stiffness * (1 - 1e-12));
@@ -147,7 +152,7 @@ TEST(Effects, LoadDependentSharingIsTheFixedPointOfEqualApproaches) {
     const MeshGeometry geo = build_mesh_geometry(d);
     const PairCompliance pair(d, geo);
     std::optional<RackSpanCompliance> span;
-    if (d.effects.rack_span == RackSpanModel::kCoupled) span.emplace(d.rack, d.pinion.pressure_angle, d.effects);
+    if (d.effects.rack_span == RackSpanModel::kCoupled) span.emplace(rack_beam(d), d.pinion.pressure_angle, d.effects);
     const double F = d.load.force;
     int multi = 0;
     for (const MeshState& s : model.curve().samples) {

@@ -147,6 +147,10 @@ struct Effects {
   // docs/models/fe_calibration.md). Not with rack_span: per_pair (the papers' method).
   bool pair_coupling = true;
   RackSpanModel rack_span = RackSpanModel::kCoupled;
+  // With rack_span: coupled, the toothed rack on its supports as FE sees it: a tooth layer in
+  // the beam's section and the rack foundation local to the tooth (FE-calibrated;
+  // docs/models/rack_span.md, "Against FE")
+  bool supported_rack = true;
   bool couple_term = true;         // couple e*F*cos(a0) of the axial force about the neutral axis
   bool body_axial = true;          // axial compliance of the rack body
   bool body_shear = true;          // Timoshenko shear of the rack body

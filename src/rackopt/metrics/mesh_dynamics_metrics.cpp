@@ -12,7 +12,7 @@ namespace rackopt::metrics {
 namespace {
 
 constexpr std::string_view kEffects =
-    "pinion_tooth, root_segment, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, pair_coupling, rack_span, couple_term, "
+    "pinion_tooth, root_segment, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, pair_coupling, rack_span, supported_rack, couple_term, "
     "body_axial, body_shear, interference_limit, spalling (and the profile relief keys)";
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }

@@ -19,7 +19,7 @@ void append_size_metrics(std::vector<MetricDefinition>& registry);       // size
 
 // Switches of drive.effects that change the stiffness curve (documentation).
 inline constexpr std::string_view kStiffnessEffects =
-    "pinion_tooth, root_segment, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, pair_coupling, rack_span, couple_term, "
+    "pinion_tooth, root_segment, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, pair_coupling, rack_span, supported_rack, couple_term, "
     "body_axial, body_shear, interference_limit, spalling";
 
 }  // namespace rackopt::metrics

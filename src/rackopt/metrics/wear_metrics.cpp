@@ -10,7 +10,9 @@ namespace {
 
 constexpr std::uint8_t kWearBits = static_cast<std::uint8_t>(Requirement::kWear);
 constexpr std::uint8_t kDutyBits = static_cast<std::uint8_t>(Requirement::kDuty);
-constexpr std::string_view kWearEffects = "pinion_tooth, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, interference_limit";
+constexpr std::string_view kWearEffects =
+    "pinion_tooth, fillet_foundation, fillet_calibration, rack_tooth, rack_foundation, hertz, pair_coupling, "
+    "interference_limit";
 
 std::string ended_by(const WearLifeResult& w) { return "ended by " + w.criterion + ": " + w.reason; }
 

@@ -880,7 +880,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   // --- effects
   const Block fx(top.get("effects"), "effects", "effects", top.mark(),
                  {"pinion_tooth", "root_segment", "fillet_foundation", "fillet_calibration", "rack_tooth",
-                  "rack_foundation", "hertz", "pair_coupling", "rack_span",
+                  "rack_foundation", "hertz", "pair_coupling", "rack_span", "supported_rack",
                   "couple_term", "body_axial", "body_shear", "interference_limit", "spalling"});
   Effects& e = drive.effects;
   const Effects defaults;
@@ -891,6 +891,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   e.rack_tooth = fx.flag("rack_tooth", defaults.rack_tooth);
   e.rack_foundation = fx.flag("rack_foundation", defaults.rack_foundation);
   e.pair_coupling = fx.flag("pair_coupling", defaults.pair_coupling);
+  e.supported_rack = fx.flag("supported_rack", defaults.supported_rack);
   {
     const std::string h = fx.choice("hertz", {"off", "linear", "weber_banaschek"},
                                     defaults.hertz == HertzModel::kOff      ? "off"

@@ -21,6 +21,7 @@
 #include "rackopt/stiffness/profile_relief.hpp"
 #include "rackopt/stiffness/rack_span.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
+#include "rackopt/stiffness/supported_rack.hpp"
 
 namespace rackopt {
 namespace {
@@ -109,7 +110,10 @@ struct MeshStiffnessModel::Impl {
     span = drive.rack.span;
     z = drive.pinion.teeth;
     contact_width = pair.contact_width();
-    neutral_axis_depth = drive.rack.section.neutral_axis_depth;
+    // The beam under the pairs: with effects.supported_rack the section
+    // carries its tooth layer (supported_rack.hpp).
+    const RackSpec beam = rack_beam(drive);
+    neutral_axis_depth = beam.section.neutral_axis_depth;
     slots = static_cast<int>(std::floor(geo.path.contact_ratio)) + 1;
 
     // Rack tooth j has its centre at x_t = offset + j p. Its -x flank carries
@@ -119,7 +123,7 @@ struct MeshStiffnessModel::Impl {
     const double shift = drive.pinion.profile_shift * drive.pinion.module + drive.mounting.clearance;
     A0 = ca * (offset - 0.25 * pitch + shift * std::tan(a0)) + s_p;
 
-    if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(drive.rack, a0, fx);
+    if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(beam, a0, fx);
     if (fx.spalling) map_spalls();
     if (ReliefOnPath r(drive, geo); r.any()) relief.emplace(r);
   }

@@ -14,6 +14,7 @@
 #include "rackopt/stiffness/pinion_tooth.hpp"
 #include "rackopt/stiffness/rack_foundation.hpp"
 #include "rackopt/stiffness/rack_tooth.hpp"
+#include "rackopt/stiffness/supported_rack.hpp"
 
 namespace rackopt {
 
@@ -107,11 +108,18 @@ PairCompliance::PairCompliance(const Drive& drive, const MeshGeometry& geo) : im
   }
   if (fx.rack_tooth) im.rack.emplace(geo, drive.rack, b_rack, drive.numerics);
   if (fx.rack_foundation && fx.rack_tooth) {
-    const double depth = rack_body_depth(drive.rack);
+    double depth = rack_body_depth(drive.rack);
     if (!(depth > 0)) {
       throw InputError({}, "rack.body_height",
                        "effects.rack_foundation needs the rack body's depth below the root line (rack.body_height, "
                        "or rack.section with its neutral_axis_depth)");
+    }
+    // On its supports the beam counts the body's bending and shear: the
+    // foundation keeps the zone under the tooth (supported_rack.hpp).
+    const bool supported = fx.supported_rack && fx.rack_span == RackSpanModel::kCoupled;
+    if (supported) {
+      depth = supported_foundation_depth(depth, 2 * geo.rack.half_thickness_at_root,
+                                         supported_rack_law().foundation_depth);
     }
     im.rack_foundation.emplace(geo, drive.rack, depth, b_rack);
     if (im.rack_foundation->outside_fitted_range()) {

@@ -269,7 +269,11 @@ struct WearModel::Impl {
   // make_path, at the node's pair force.
   void build_compliance_tables(double b_rack) {
     (void)b_rack;
-    pair.emplace(drive, geo);
+    // The wear model's rack body is rigid: its foundation is the one of a
+    // rack held under its body (not the local one of a rack on supports).
+    Drive rigid = drive;
+    rigid.effects.rack_span = RackSpanModel::kRigid;
+    pair.emplace(rigid, geo);
     const int n = 512;
     cp_lo = std::min(s_lo, s_start_nom);
     cp_ds = (s_end - cp_lo) / n;

@@ -1,0 +1,58 @@
+// The toothed rack on its hinged supports, as FE sees it: two corrections
+// to the pair compliance and the hinged beam of rack_span.hpp, fitted on FE
+// mesh positions of racks on their supports (tests/data/fe/supports.csv,
+// docs/models/rack_span.md "Against FE"). Effect `effects.supported_rack`,
+// applied wherever the rack body is flexible (rack_span coupled or
+// per_pair).
+//
+//  * A tooth layer. The beam of rack_span.hpp is the body below the root
+//    line; the teeth stand on it as separate beams, yet their roots bend
+//    with the body. A layer of beta times the tooth height, as wide as the
+//    teeth, added on top of the section's area, second moment and shear
+//    area stands for that (the contacts' lever arms stay measured from the
+//    body's own axis).
+//  * A local rack foundation. The rack tooth's foundation
+//    (rack_foundation.hpp) was calibrated on a rack segment whose base is
+//    held at the body's whole depth H: it counts the body's deformation
+//    down to that base. On supports the beam counts the body's bending and
+//    shear, so the foundation is taken at a depth of k root thicknesses
+//    (at most H): the zone under the tooth that the beam does not see.
+//
+// Example:
+//   const SupportedRackLaw law = supported_rack_law();
+//   RackSpec beam = rack_with_tooth_layer(drive.rack, tooth_height, teeth_width, law.tooth_layer);
+//   double depth = supported_foundation_depth(H, root_thickness, law.foundation_depth);
+#pragma once
+
+#include "rackopt/core/drive.hpp"
+
+namespace rackopt {
+
+struct SupportedRackLaw {
+  double tooth_layer = 0;       // beta: layer thickness / tooth height
+  double foundation_depth = 3;  // k: foundation depth / root thickness (>= 0.55, the calibration's least)
+};
+
+// The fitted law (`fe_calibration --fit supports`).
+SupportedRackLaw supported_rack_law();
+
+// `rack` with a layer of beta * tooth_height, `teeth_width` wide, added on
+// top of its section (directly above the root line): the area, the second
+// moment about the composite's centroid and the shear area (kappa kept) of
+// body + layer. The neutral_axis_depth, from which the contacts' lever arms
+// are measured, stays the body's. beta = 0 returns the section unchanged. Throws std::invalid_argument for
+// a negative beta or a non-positive height or width.
+RackSpec rack_with_tooth_layer(const RackSpec& rack, double tooth_height, double teeth_width, double beta);
+
+// The rack as the beam of rack_span.hpp sees it in the mesh model: with
+// effects.supported_rack and rack_span coupled, drive.rack with its tooth
+// layer (the law's beta, the tooth height (h_a2* + h_f2*) m, the rack face
+// width or else the pinion's); otherwise drive.rack.
+RackSpec rack_beam(const Drive& drive);
+
+// The depth [m] the rack foundation is taken at on supports: k *
+// root_thickness, at most body_depth. Throws std::invalid_argument for k
+// below the calibration's smallest depth (RackFoundationRange::depth_lo).
+double supported_foundation_depth(double body_depth, double root_thickness, double k);
+
+}  // namespace rackopt
