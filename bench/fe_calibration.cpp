@@ -22,7 +22,7 @@
 // analytic column being the tooth beam + Sainsot's foundation (run the
 // data set with effects.fillet_calibration off, as --set pinion does), and
 // each tooth count left out in turn.
-// --fit coupling: the share kappa of the pairs' coupling
+// --fit coupling FILE[,FILE...]: the share kappa of the pairs' coupling
 // (stiffness/pair_coupling.hpp) on a period data file, the largest K error
 // of the double-pair positions made smallest, and each problem left out in
 // turn.
@@ -687,18 +687,23 @@ int fit_pinion(const std::string& path) {
 // foundations (pair coupling off, rigid rack, at the FE's load) and K_FE.
 struct CouplingSample {
   std::string problem;
+  double alpha = 0;
   double c1 = 0, c2 = 0, foundations = 0, k_fe = 0;
   // K of two pairs with cross compliance x = kappa * foundations.
   double k(double kappa) const {
     const double x = kappa * foundations;
     return (c1 + c2 - 2 * x) / (c1 * c2 - x * x);
   }
+  // kappa = k20 + k1 (alpha [deg] - 20).
+  double k(double k20, double k1) const { return k(k20 + k1 * (alpha * 180 / std::numbers::pi - 20)); }
 };
 
-int fit_coupling(const std::string& path) {
+int fit_coupling(const std::string& paths) {
+  std::vector<CouplingSample> rows;
+  std::stringstream list(paths);
+  for (std::string path; std::getline(list, path, ',');) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
-  std::vector<CouplingSample> rows;
   std::vector<std::string> header;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
@@ -715,7 +720,12 @@ int fit_coupling(const std::string& path) {
       throw std::runtime_error(std::string("no column ") + name + " in " + path);
     };
     if (col("pairs") != 2) continue;
-    Drive d = load_problem(problem_path(f[1]));
+    std::vector<std::string> overrides;
+    std::stringstream ov(f[2]);
+    for (std::string t; std::getline(ov, t, ';');) {
+      if (!t.empty()) overrides.push_back(t);
+    }
+    Drive d = load_problem(problem_path(f[1]), overrides);
     d.effects.rack_span = RackSpanModel::kRigid;
     d.effects.pair_coupling = false;
     d.spalls.clear();
@@ -723,7 +733,8 @@ int fit_coupling(const std::string& path) {
     const MeshState st = MeshStiffnessModel(d).at(col("travel_m"));
     if (st.pairs.size() != 2) throw std::runtime_error("expected two pairs at a row of " + path);
     CouplingSample r;
-    r.problem = f[1];
+    r.problem = f[1] + (f[2].empty() ? "" : "|" + f[2]);
+    r.alpha = d.pinion.pressure_angle;
     r.c1 = st.pairs[0].local();
     r.c2 = st.pairs[1].local();
     r.foundations = 0.5 * (st.pairs[0].fillet + st.pairs[0].rack_foundation + st.pairs[1].fillet +
@@ -731,7 +742,8 @@ int fit_coupling(const std::string& path) {
     r.k_fe = col("K_fe");
     rows.push_back(r);
   }
-  if (rows.size() < 4) throw std::runtime_error("too few double-pair positions in " + path);
+  }
+  if (rows.size() < 4) throw std::runtime_error("too few double-pair positions in " + paths);
   auto worst = [&](double kappa, const std::function<bool(const CouplingSample&)>& use) {
     double w = 0;
     for (const CouplingSample& r : rows) {
@@ -762,7 +774,49 @@ int fit_coupling(const std::string& path) {
     std::printf("// %s left out: kappa %.4f, on it: largest K error %.4f\n", p.c_str(), k,
                 worst(k, [&](const CouplingSample& r) { return r.problem == p; }));
   }
-  std::printf("double pair_coupling_share() { return %.4f; }\n", kappa);
+  // kappa linear in the pressure angle, largest K error made smallest.
+  auto worst2 = [&](double k20, double k1, const std::function<bool(const CouplingSample&)>& use) {
+    double w = 0;
+    for (const CouplingSample& r : rows) {
+      if (use(r)) w = std::max(w, std::abs(r.k(k20, k1) / r.k_fe - 1));
+    }
+    return w;
+  };
+  auto best2 = [&](const std::function<bool(const CouplingSample&)>& use, double* k20, double* k1) {
+    double w = INFINITY;
+    for (int i = 0; i <= 400; ++i) {
+      for (int j = -40; j <= 40; ++j) {
+        const double a = 0.2 + 0.001 * i, b = 0.0005 * j;
+        const double e = worst2(a, b, use);
+        if (e < w) {
+          w = e;
+          *k20 = a;
+          *k1 = b;
+        }
+      }
+    }
+    return w;
+  };
+  double k20 = 0, k1 = 0;
+  const double w2 = best2(all, &k20, &k1);
+  std::printf("// kappa = %.4f + %.5f (alpha - 20 deg): largest K error %.4f\n", k20, k1, w2);
+  for (const std::string& p : problems) {
+    double a = 0, b = 0;
+    best2([&](const CouplingSample& r) { return r.problem != p; }, &a, &b);
+    std::printf("// %s left out: kappa %.4f + %.5f (alpha - 20), on it: largest K error %.4f\n", p.c_str(), a, b,
+                worst2(a, b, [&](const CouplingSample& r) { return r.problem == p; }));
+  }
+  for (const CouplingSample& r : rows) {
+    // The share that alone makes this position's K equal to FE's.
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 50; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (r.k(mid) > r.k_fe ? lo : hi) = mid;
+    }
+    std::printf("//   %s (%.1f deg): kappa alone %.4f, error at the fit %+.4f\n", r.problem.c_str(),
+                r.alpha * 180 / std::numbers::pi, 0.5 * (lo + hi), r.k(k20, k1) / r.k_fe - 1);
+  }
+  std::printf("PairCouplingShare pair_coupling_fit() { return {%.4f, %.5f}; }\n", k20, k1);
   return 0;
 }
 
@@ -860,9 +914,9 @@ int fit_supports(const std::string& path) {
   };
   auto best = [&](const std::function<bool(const SupportsSample&)>& use, double* b_out, double* g_out) {
     double wb = INFINITY;
-    for (int ib = 0; ib <= 30; ++ib) {
-      for (int ig = 0; ig <= 18; ++ig) {
-        const double b = 0.02 * ib, g = 0.55 + 0.1 * ig;
+    for (int ib = 0; ib <= 80; ++ib) {
+      for (double g : {0.55, 0.75, 1.0, 1.5, 2.0, 3.0}) {
+        const double b = 0.005 * ib;
         const double e = worst(b, g, use);
         if (e < wb) {
           wb = e;
@@ -874,17 +928,22 @@ int fit_supports(const std::string& path) {
     return wb;
   };
   const auto all = [](const SupportsSample&) { return true; };
+  // Fitted on the slender spans (at least 8 body depths): the beam picture
+  // the law corrects; the deep short spans are reported, not fitted.
+  const auto slender = [](const SupportsSample& r) { return r.drive.rack.span >= 8 * r.depth; };
   double beta = 0, k_depth = 3;
-  const double w = best(all, &beta, &k_depth);
-  std::printf("// %zu positions; as is: largest K error %.4f; tooth layer beta = %.2f, foundation depth k = %.2f root thicknesses: %.4f\n",
+  const double w = best(slender, &beta, &k_depth);
+  std::printf("// fitted on the slender spans: largest K error there %.4f, on all %.4f\n", w,
+              worst(beta, k_depth, all));
+  std::printf("// %zu positions; as is: largest K error %.4f; tooth layer beta = %.3f, foundation depth k = %.2f root thicknesses: %.4f\n",
               rows.size(), worst(0, 100, all), beta, k_depth, w);
   for (double g : {100.0, k_depth}) {
     double bb = 0, wb = INFINITY;
-    for (int ib = 0; ib <= 30; ++ib) {
-      const double e = worst(0.02 * ib, g, all);
+    for (int ib = 0; ib <= 80; ++ib) {
+      const double e = worst(0.005 * ib, g, all);
       if (e < wb) {
         wb = e;
-        bb = 0.02 * ib;
+        bb = 0.005 * ib;
       }
     }
     std::printf("// k_depth fixed at %.2f: best beta %.2f, largest K error %.4f\n", g, bb, wb);

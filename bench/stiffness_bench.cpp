@@ -28,6 +28,33 @@ void BM_FullSpanCurveWithModel(benchmark::State& state) {
 }
 BENCHMARK(BM_FullSpanCurveWithModel)->Arg(100)->Arg(25)->Unit(benchmark::kMillisecond);
 
+// What each effect of the FE-grade pair compliance costs on that curve
+// (docs/models/fe_calibration.md, "Each effect's share"): 0 the papers'
+// tooth model (constant contact term, clamped rack tooth, Sainsot's
+// foundation, pairs in parallel), then added in turn 1 the rack foundation,
+// 2 the Weber-Banaschek contact, 3 the fillet calibration, 4 the pairs'
+// coupling, 5 the supported rack (= the default); 6 the default with the
+// constant contact term.
+void BM_FullSpanCurveEffects(benchmark::State& state) {
+  rackopt::Drive d = railway();
+  const int level = static_cast<int>(state.range(0));
+  rackopt::Effects& e = d.effects;
+  if (level < 6) {
+    e.rack_foundation = level >= 1;
+    e.hertz = level >= 2 ? rackopt::HertzModel::kWeberBanaschek : rackopt::HertzModel::kLinear;
+    e.fillet_calibration = level >= 3;
+    e.pair_coupling = level >= 4;
+    e.supported_rack = level >= 5;
+  } else {
+    e.hertz = rackopt::HertzModel::kLinear;
+  }
+  for (auto _ : state) {
+    rackopt::MeshStiffnessModel model(d);
+    benchmark::DoNotOptimize(model.curve().k_min);
+  }
+}
+BENCHMARK(BM_FullSpanCurveEffects)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
 void BM_ModelConstruction(benchmark::State& state) {
   const rackopt::Drive d = railway();
   for (auto _ : state) {

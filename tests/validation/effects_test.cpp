@@ -172,7 +172,8 @@ TEST(Effects, LoadDependentSharingIsTheFixedPointOfEqualApproaches) {
           double x = 0;
           if (span && pj.segment == pk.segment) x += span->influence(pj.a, pj.e, pk.a, pk.e);
           if (d.effects.pair_coupling && std::abs(pj.rack_tooth - pk.rack_tooth) == 1) {
-            x += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation);
+            x += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation,
+                                        d.pinion.pressure_angle);
           }
           u += x * F * pk.load_share;
         }

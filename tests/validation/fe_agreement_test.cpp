@@ -233,10 +233,12 @@ namespace {
 // A spread of designs over the range the model claims (tests/data/fe/
 // spread.csv: z 12..40, pressure angle 14..25 deg, profile shift -0.3..+0.5,
 // modules 4..63 mm, with and without undercut), six positions of a mesh
-// period each: K within 5 % everywhere, the load shares within 0.05.
+// period each: K within 5 % everywhere (measured: -1.9 ... +4.4 %, the
+// largest in the triple-pair zone of the 14 deg, 40-tooth pinion), the load
+// shares within 0.05.
 TEST(FeAgreement, DesignSpreadOverWholeMeshPeriods) {
   const std::vector<FeRow> rows = fe_rows("spread.csv");
-  EXPECT_GE(rows.size(), 18u);
+  EXPECT_GE(rows.size(), 54u);
   WorstError k;
   double share_error = 0;
   std::map<std::string, int> designs;
@@ -257,7 +259,7 @@ TEST(FeAgreement, DesignSpreadOverWholeMeshPeriods) {
     std::printf("[ info ] %-80s X %.4f pairs %.0f K error %+.4f\n", key.c_str(), r["travel_m"], r["pairs"],
                 st.stiffness / r["K_fe"] - 1);
   }
-  EXPECT_GE(designs.size(), 3u);
+  EXPECT_EQ(designs.size(), 9u);
   EXPECT_LT(k.value, 0.05) << k.where;
   EXPECT_LT(share_error, 0.05);
 }
@@ -274,9 +276,9 @@ namespace {
 // pitches, pressure angles 14-25 deg and the shipped heavy racks, against
 // the coupled analytic model on the FE's rectangular body
 // (fe/rack_span_fe.hpp's rack_on_supports_drive does the same). With
-// effects.supported_rack K is within 5.3 % of FE on the slender spans and
-// 9.3 % on the deep short span of the ship lift; without it the beam under
-// the teeth is 10-30 % too soft.
+// effects.supported_rack K is within 5.4 % of FE on the slender spans and
+// 9.9 % on the deep short span of the ship lift; without it the beam under
+// the teeth is 7-24 % too soft.
 Drive supported_row_drive(const FeRow& r) {
   Drive d = test::problem(r.problem + ".yaml", r.overrides);
   d.effects.spalling = false;
@@ -317,7 +319,7 @@ TEST(FeAgreement, RackOnItsSupportsAgainstFe) {
   // ship lift's 1 m span under a 250 mm body (span / depth 4, five teeth on
   // the span) is a deep beam the law does not reach (docs/models/rack_span.md).
   EXPECT_LT(slender.value, 0.06) << slender.where;
-  EXPECT_LT(with.value, 0.10) << with.where;
+  EXPECT_LT(with.value, 0.11) << with.where;
   EXPECT_GT(without.value, 0.1) << without.where;
 }
 

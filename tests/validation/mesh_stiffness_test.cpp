@@ -182,7 +182,8 @@ TEST(MeshStiffnessCurve, CoupledSolveMatchesDirectInverse) {
     auto infl = [&](const PairState& a, const PairState& b) {
       double c = a.segment == b.segment ? beam.influence(a.a, a.e, b.a, b.e) : 0.0;
       if (std::abs(a.rack_tooth - b.rack_tooth) == 1) {
-        c += adjacent_pair_coupling(a.fillet + a.rack_foundation, b.fillet + b.rack_foundation);
+        c += adjacent_pair_coupling(a.fillet + a.rack_foundation, b.fillet + b.rack_foundation,
+                                    d.pinion.pressure_angle);
       }
       return c;
     };

@@ -158,7 +158,12 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
       c.share_analytic = p.load_share;
       c.pinion_analytic = p.pinion.total() + p.fillet;
       c.pinion_compared = pinion_contact_on_involute(model.geometry(), p.s);
-      c.rack_analytic = p.rack.total() + p.rack_foundation;
+      // The FE single-tooth solve holds the segment's base: on supports the
+      // model's rack foundation is the local one, so the held one is compared.
+      const Effects& fx = model.drive().effects;
+      c.rack_analytic = fx.supported_rack && fx.rack_span == RackSpanModel::kCoupled
+                            ? analytic_tooth_compliance(model.drive(), ToothMember::kRack, p.s)
+                            : p.rack.total() + p.rack_foundation;
       row.pairs.push_back(c);
     }
     out.rows.push_back(std::move(row));

@@ -76,8 +76,12 @@ double patch_curvature_radius(double s, double module) { return std::max(s, 0.1 
 
 double analytic_tooth_compliance(const Drive& drive, ToothMember member, double s) {
   const MeshGeometry g = build_mesh_geometry(drive);
+  // The FE rack segment's base is held: the rack foundation of a held body,
+  // not the local one of a rack on its supports (stiffness/supported_rack.hpp).
+  Drive held = drive;
+  held.effects.rack_span = RackSpanModel::kRigid;
   // The fillet foundation at the pinion's own face width, as the FE pinion is loaded.
-  const PairTeeth t = PairCompliance(drive, g).teeth(s, nullptr, nullptr, drive.pinion.face_width);
+  const PairTeeth t = PairCompliance(held, g).teeth(s, nullptr, nullptr, drive.pinion.face_width);
   if (member == ToothMember::kPinion) return t.pinion.total() + t.fillet;
   return t.rack.total() + t.rack_foundation;
 }

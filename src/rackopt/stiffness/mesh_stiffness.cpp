@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -91,6 +92,7 @@ struct MeshStiffnessModel::Impl {
   double span = 0;
   double contact_width = 0;
   double neutral_axis_depth = 0;
+  double e_at_s0 = 0;
   int z = 0;
   int slots = 1;
   std::vector<MappedSpall> spalls;
@@ -114,6 +116,8 @@ struct MeshStiffnessModel::Impl {
     // carries its tooth layer (supported_rack.hpp).
     const RackSpec beam = rack_beam(drive);
     neutral_axis_depth = beam.section.neutral_axis_depth;
+    // The contact height is affine in s (slope -sin a0): its value at s = 0.
+    e_at_s0 = neutral_axis_depth + geo.rack.dedendum + geo.contact_height_above_datum(0.0);
     slots = static_cast<int>(std::floor(geo.path.contact_ratio)) + 1;
 
     // Rack tooth j has its centre at x_t = offset + j p. Its -x flank carries
@@ -258,7 +262,7 @@ struct MeshStiffnessModel::Impl {
       c += span_model->influence(pj.a, pj.e, pk.a, pk.e);
     }
     if (coupled_pairs() && std::abs(pj.rack_tooth - pk.rack_tooth) == 1) {
-      c += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation);
+      c += adjacent_pair_coupling(pj.fillet + pj.rack_foundation, pk.fillet + pk.rack_foundation, a0);
     }
     return c;
   }
@@ -274,6 +278,7 @@ struct MeshStiffnessModel::Impl {
   MeshState state(double X, int side, Parts&& parts_of) const {
     MeshState st;
     st.travel = X;
+    st.pairs.reserve(static_cast<std::size_t>(slots) + 1);
     std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
@@ -291,7 +296,7 @@ struct MeshStiffnessModel::Impl {
       const double x_side = x_of(j, xm);
       p.segment = floor_div_int(x_side / span);
       p.a = std::clamp(p.x - p.segment * span, 0.0, span);
-      p.e = neutral_axis_depth + geo.rack.dedendum + geo.contact_height_above_datum(p.s);
+      p.e = e_at_s0 - p.s * sa;  // neutral_axis_depth + h_f2 + contact height above the datum
       const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
       p.pinion = lp.teeth.pinion;
       p.fillet = lp.teeth.fillet;
@@ -346,8 +351,10 @@ struct MeshStiffnessModel::Impl {
     } else if (gF <= 0) {
       f1 = F;
     } else {
-      // Start: the linear solution with each term at half the load.
-      const double c1 = a1 + law[0].at(0.5 * F), c2 = a2 + law[1].at(0.5 * F);
+      // Start: the linear solution with each term at half the load, which
+      // the law puts ln 2 times its slope above the term at F.
+      const double c1 = a1 + c1F + law[0].slope_at(0.5 * F) * std::numbers::ln2;
+      const double c2 = a2 + c2F + law[1].slope_at(0.5 * F) * std::numbers::ln2;
       const double den = c1 + c2 - 2 * x;
       if (!(den > 0)) return false;
       f1 = std::clamp(F * (c2 - x) / den, 0.0, F);

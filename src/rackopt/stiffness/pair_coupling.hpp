@@ -12,17 +12,26 @@
 //   x_jk = kappa (f_j + f_k) / 2,   f = fillet foundation (with its
 //                                   calibration) + rack foundation,
 //
-// kappa fitted on the FE periods (docs/models/fe_calibration.md, "The
-// pairs' coupling"). Effect `effects.pair_coupling`; the rack beam's own
-// coupling (rack_span.hpp) is separate.
+// kappa, linear in the pressure angle, fitted on the FE periods of the
+// shipped drives and of a design spread (docs/models/fe_calibration.md,
+// "The pairs' coupling"). Effect `effects.pair_coupling`; the rack beam's
+// own coupling (rack_span.hpp) is separate.
 #pragma once
 
 namespace rackopt {
 
-// kappa, dimensionless.
-double pair_coupling_share();
+// kappa = at_20_deg + per_deg (alpha0 [deg] - 20).
+struct PairCouplingShare {
+  double at_20_deg = 0;
+  double per_deg = 0;
+};
+PairCouplingShare pair_coupling_fit();
 
-// x_jk [m/N] from the two pairs' foundation compliances [m/N].
-double adjacent_pair_coupling(double foundations_j, double foundations_k);
+// kappa at the pressure angle alpha0 [rad], dimensionless.
+double pair_coupling_share(double pressure_angle);
+
+// x_jk [m/N] from the two pairs' foundation compliances [m/N] at the
+// pressure angle alpha0 [rad].
+double adjacent_pair_coupling(double foundations_j, double foundations_k, double pressure_angle);
 
 }  // namespace rackopt

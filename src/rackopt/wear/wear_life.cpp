@@ -334,7 +334,7 @@ struct WearModel::Impl {
       out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
       cross[j] = 0;
       if (coupled_pairs && j > 0) {
-        cross[j - 1] = adjacent_pair_coupling(foundations(c[j - 1], clearance), foundations(c[j], clearance));
+        cross[j - 1] = adjacent_pair_coupling(foundations(c[j - 1], clearance), foundations(c[j], clearance), a0);
       }
     }
     if (!pair->contact_depends_on_force() || n == 1) return;
