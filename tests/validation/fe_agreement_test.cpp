@@ -203,6 +203,8 @@ TEST(FeAgreement, WholeMeshPeriodOfTheShippedProblems) {
       share_error = std::max(share_error, std::abs(st.pairs[k].load_share - std::stod(v)));
     }
   }
+  std::printf("[ info ] shipped periods: largest K error %.4f single-pair, %.4f multi-pair\n", single.value,
+              multi.value);
   EXPECT_LT(single.value, 0.03) << single.where;
   EXPECT_LT(multi.value, 0.03) << multi.where;
   EXPECT_LT(share_error, 0.03);
