@@ -3,6 +3,7 @@
 // foundation depth rule.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include "rackopt/stiffness/rack_foundation.hpp"
@@ -62,6 +63,8 @@ TEST(SupportedRack, FoundationDepthIsLocalButNeverBelowTheCalibration) {
   const SupportedRackLaw law = supported_rack_law();
   EXPECT_GE(law.foundation_depth, RackFoundationRange{}.depth_lo);
   EXPECT_GT(law.tooth_layer, 0.0);
+  for (double deg : {12.0, 14.0, 20.0, 25.0, 30.0}) EXPECT_GE(law.tooth_layer_at(deg * M_PI / 180), 0.0);
+  EXPECT_DOUBLE_EQ(law.tooth_layer_at(20 * M_PI / 180), law.tooth_layer);
 }
 
 }  // namespace

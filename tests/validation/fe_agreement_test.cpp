@@ -272,15 +272,15 @@ TEST(FeAgreement, DesignSpreadOverWholeMeshPeriods) {
 namespace rackopt {
 namespace {
 
-// The rack on its hinged supports (tests/data/fe/supports.csv): FE mesh
+// The rack on its hinged supports (tests/data/fe/supports.csv): 24 FE mesh
 // positions of the toothed rack over its whole span, at mid-span and near
 // the left hinge, for body depths of 1.3-5 tooth heights, spans of 16-32
 // pitches, pressure angles 14-25 deg and the shipped heavy racks, against
 // the coupled analytic model on the FE's rectangular body
 // (fe/rack_span_fe.hpp's rack_on_supports_drive does the same). With
 // effects.supported_rack K is within 5.4 % of FE on the slender spans and
-// 9.9 % on the deep short span of the ship lift; without it the beam under
-// the teeth is 7-24 % too soft.
+// 10.0 % on the deep short span of the ship lift; without it the beam under
+// the teeth is 7-34 % too soft.
 Drive supported_row_drive(const FeRow& r) {
   Drive d = test::problem(r.problem + ".yaml", r.overrides);
   d.effects.spalling = false;
@@ -301,7 +301,7 @@ Drive supported_row_drive(const FeRow& r) {
 
 TEST(FeAgreement, RackOnItsSupportsAgainstFe) {
   const std::vector<FeRow> rows = fe_rows("supports.csv");
-  EXPECT_GE(rows.size(), 15u);
+  EXPECT_GE(rows.size(), 24u);
   WorstError with, slender, without;
   for (const FeRow& r : rows) {
     Drive d = supported_row_drive(r);

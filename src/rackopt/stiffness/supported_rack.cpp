@@ -1,6 +1,7 @@
 #include "rackopt/stiffness/supported_rack.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <stdexcept>
 
 #include "rackopt/stiffness/rack_foundation.hpp"
@@ -10,7 +11,11 @@ namespace rackopt {
 // `fe_calibration --fit supports tests/data/fe/supports.csv`
 // (docs/models/rack_span.md, "Against FE").
 // SUPPORTED_RACK_FIT
-SupportedRackLaw supported_rack_law() { return {0.14, 0.55}; }
+SupportedRackLaw supported_rack_law() { return {0.135, 0.0070, 0.55}; }
+
+double SupportedRackLaw::tooth_layer_at(double pressure_angle) const {
+  return std::max(0.0, tooth_layer + tooth_layer_per_deg * (pressure_angle * 180 / std::numbers::pi - 20));
+}
 
 RackSpec rack_with_tooth_layer(const RackSpec& rack, double tooth_height, double teeth_width, double beta) {
   if (!(beta >= 0)) throw std::invalid_argument("rack_with_tooth_layer: beta must be >= 0");
@@ -40,7 +45,8 @@ RackSpec rack_beam(const Drive& drive) {
   if (!drive.effects.supported_rack || drive.effects.rack_span != RackSpanModel::kCoupled) return drive.rack;
   const double width = drive.rack.face_width > 0 ? drive.rack.face_width : drive.pinion.face_width;
   const double height = (drive.rack.addendum_coef + drive.rack.dedendum_coef) * drive.pinion.module;
-  return rack_with_tooth_layer(drive.rack, height, width, supported_rack_law().tooth_layer);
+  return rack_with_tooth_layer(drive.rack, height, width,
+                               supported_rack_law().tooth_layer_at(drive.pinion.pressure_angle));
 }
 
 double supported_foundation_depth(double body_depth, double root_thickness, double k) {

@@ -29,8 +29,11 @@
 namespace rackopt {
 
 struct SupportedRackLaw {
-  double tooth_layer = 0;       // beta: layer thickness / tooth height
-  double foundation_depth = 3;  // k: foundation depth / root thickness (>= 0.55, the calibration's least)
+  double tooth_layer = 0;            // beta at 20 deg: layer thickness / tooth height
+  double tooth_layer_per_deg = 0;    // d beta / d alpha0 [1/deg]
+  double foundation_depth = 3;       // k: foundation depth / root thickness (>= 0.55, the calibration's least)
+  // beta at the pressure angle alpha0 [rad] (not below 0).
+  double tooth_layer_at(double pressure_angle) const;
 };
 
 // The fitted law (`fe_calibration --fit supports`).
@@ -46,8 +49,9 @@ RackSpec rack_with_tooth_layer(const RackSpec& rack, double tooth_height, double
 
 // The rack as the beam of rack_span.hpp sees it in the mesh model: with
 // effects.supported_rack and rack_span coupled, drive.rack with its tooth
-// layer (the law's beta, the tooth height (h_a2* + h_f2*) m, the rack face
-// width or else the pinion's); otherwise drive.rack.
+// layer (the law's beta at the drive's pressure angle, the tooth height
+// (h_a2* + h_f2*) m, the rack face width or else the pinion's); otherwise
+// drive.rack.
 RackSpec rack_beam(const Drive& drive);
 
 // The depth [m] the rack foundation is taken at on supports: k *
