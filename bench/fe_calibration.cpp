@@ -9,9 +9,9 @@
 // in '#' lines; tests/data/fe/ holds the committed ones and their README
 // says how they were made (docs/models/fe_calibration.md).
 //
-//   ./build/fe_calibration --set rack|pinion|contact|period --out FILE
+//   ./build/fe_calibration --set rack|pinion|contact|period|spread|supports --out FILE
 //                          [--threads T] [--level L] [--limit N]
-//   ./build/fe_calibration --fit rack|pinion|coupling FILE
+//   ./build/fe_calibration --fit rack|pinion|coupling|supports FILE[,FILE...]
 //
 // --fit rack: the least-squares fit of the rack foundation law
 // (stiffness/rack_foundation.hpp) to a rack data file, printed as the
@@ -23,9 +23,12 @@
 // data set with effects.fillet_calibration off, as --set pinion does), and
 // each tooth count left out in turn.
 // --fit coupling FILE[,FILE...]: the share kappa of the pairs' coupling
-// (stiffness/pair_coupling.hpp) on a period data file, the largest K error
-// of the double-pair positions made smallest, and each problem left out in
-// turn.
+// (stiffness/pair_coupling.hpp), linear in the pressure angle, on period
+// data files (period, spread), the largest K error of the double-pair
+// positions made smallest, and each design left out in turn.
+// --fit supports: the supported rack's law (stiffness/supported_rack.hpp)
+// on a supports data file, fitted on the slender spans, each design left
+// out in turn.
 //
 // Rows are appended to FILE.partial as the solves finish, so an interrupted
 // run resumes where it stopped; the finished file is sorted by key and
@@ -192,6 +195,20 @@ std::vector<Job> period_jobs() {
   return jobs;
 }
 
+// The FE load shares of the theoretical pairs, ';'-separated.
+std::string theoretical_shares(const FePosition& pos) {
+  std::string shares;
+  for (const FePair& q : pos.pairs) {
+    if (q.theoretical) shares += (shares.empty() ? "" : ";") + fmt(q.load_share);
+  }
+  return shares;
+}
+
+// The first cells of a row: key, problem and the design's overrides.
+std::string row_start(const Job& j) {
+  return '"' + j.key + "\"," + j.problem + ",\"" + join(j.overrides, ";") + "\",";
+}
+
 // A spread of designs over the range the model claims (z 12..40, pressure
 // angle 14..25 deg, profile shift -0.3..+0.5, modules 4..63 mm, with and
 // without undercut), at the same six positions of a mesh period as
@@ -298,13 +315,9 @@ std::string supports_row(const Job& j, FeOptions o) {
   }
   const MeshState an = coupled.at(X);
   const FePosition pos = fe_mesh_position(d, X, o);
-  std::string shares;
-  for (const FePair& q : pos.pairs) {
-    if (q.theoretical) shares += (shares.empty() ? "" : ";") + fmt(q.load_share);
-  }
+  const std::string shares = theoretical_shares(pos);
   std::ostringstream r;
-  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\"," << fmt(d.pinion.module) << ','
-    << fmt(fe_contact_width(d)) << ',' << fmt(d.load.force) << ',' << fmt(d.rack.span) << ','
+  r << row_start(j) << fmt(d.pinion.module) << ',' << fmt(fe_contact_width(d)) << ',' << fmt(d.load.force) << ',' << fmt(d.rack.span) << ','
     << fmt(fe_rack_body_depth(d, o)) << ',' << fmt(X) << ',' << fmt(an.pairs.front().a) << ',' << an.pairs.size()
     << ',' << fmt(pos.stiffness) << ',' << fmt(pos.load_fraction) << ",\"" << shares << "\"," << o.level << ','
     << pos.elements << ',' << fmt(pos.seconds);
@@ -325,12 +338,9 @@ std::string period_row(const Job& j, const FeOptions& o) {
   const double pitch = std::numbers::pi * d.pinion.module;
   const double X = x0 + j.fraction * pitch;
   const FePosition pos = fe_mesh_position(d, X, o);
-  std::string shares;
-  for (const FePair& p : pos.pairs) {
-    if (p.theoretical) shares += (shares.empty() ? "" : ";") + fmt(p.load_share);
-  }
+  const std::string shares = theoretical_shares(pos);
   std::ostringstream r;
-  r << '"' << j.key << "\"," << j.problem << ",\"" << join(j.overrides, ";") << "\"," << fmt(d.pinion.module) << ','
+  r << row_start(j) << fmt(d.pinion.module) << ','
     << fmt(std::min(d.pinion.face_width, d.rack.face_width > 0 ? d.rack.face_width : d.pinion.face_width)) << ','
     << fmt(d.load.force) << ',' << fmt(X) << ',' << fmt(j.fraction) << ',' << model.at(X).pairs.size() << ','
     << fmt(pos.stiffness) << ',' << fmt(pos.load_fraction) << ",\"" << shares << "\"," << o.level << ','
@@ -462,15 +472,39 @@ std::vector<std::string> split_csv(const std::string& line) {
   return out;
 }
 
-struct RackSample {
-  std::string base;
-  double alpha = 0, S = 0, q = 0, depth = 0, round = 0, analytic = 0, fe = 0;
+// One data row of a calibration file: its cells, the numbers by column
+// name, and the design's overrides (column 3, ';'-separated).
+struct DataRow {
+  const std::vector<std::string>& header;
+  const std::vector<std::string>& cells;
+  const std::string& path;
+  double col(const char* name) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return std::stod(cells.at(i));
+    }
+    throw std::runtime_error(std::string("no column ") + name + " in " + path);
+  }
+  std::string text(const char* name) const {
+    for (std::size_t i = 0; i < header.size(); ++i) {
+      if (header[i] == name) return cells.at(i);
+    }
+    return {};
+  }
+  std::vector<std::string> overrides() const {
+    std::vector<std::string> out;
+    std::stringstream ss(cells.at(2));
+    for (std::string t; std::getline(ss, t, ';');) {
+      if (!t.empty()) out.push_back(t);
+    }
+    return out;
+  }
 };
 
-std::vector<RackSample> read_rack_samples(const std::string& path) {
+// Calls fn for every row that carries values (comments, the header and
+// skipped designs left out).
+void for_each_data_row(const std::string& path, const std::function<void(const DataRow&)>& fn) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
-  std::vector<RackSample> out;
   std::vector<std::string> header;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
@@ -479,26 +513,32 @@ std::vector<RackSample> read_rack_samples(const std::string& path) {
       header = f;
       continue;
     }
-    if (f.size() < 2 || f[1] == "skipped") continue;
-    auto col = [&](const char* name) {
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        if (header[i] == name) return std::stod(f.at(i));
-      }
-      throw std::runtime_error(std::string("no column ") + name + " in " + path);
-    };
+    if (f.size() != header.size()) continue;
+    fn(DataRow{header, f, path});
+  }
+}
+
+struct RackSample {
+  std::string base;
+  double alpha = 0, S = 0, q = 0, depth = 0, round = 0, analytic = 0, fe = 0;
+};
+
+std::vector<RackSample> read_rack_samples(const std::string& path) {
+  std::vector<RackSample> out;
+  for_each_data_row(path, [&](const DataRow& f) {
     RackSample r;
-    r.base = f[1];
-    r.alpha = col("alpha_deg") * std::numbers::pi / 180;
-    const double t = std::tan(r.alpha), y = col("load_height_star");
-    const double w_f = std::numbers::pi / 4 + col("hf_star") * t;  // half thickness at the root line / m
+    r.base = f.cells[1];
+    r.alpha = f.col("alpha_deg") * std::numbers::pi / 180;
+    const double t = std::tan(r.alpha), y = f.col("load_height_star");
+    const double w_f = std::numbers::pi / 4 + f.col("hf_star") * t;  // half thickness at the root line / m
     r.S = 2 * w_f;
     r.q = (y - (w_f - y * t) * t) / r.S;
-    r.depth = col("body_depth_star") / r.S;
-    r.round = col("root_radius_star") / r.S;
-    r.analytic = col("analytic_Eb");
-    r.fe = col("fe_Eb");
+    r.depth = f.col("body_depth_star") / r.S;
+    r.round = f.col("root_radius_star") / r.S;
+    r.analytic = f.col("analytic_Eb");
+    r.fe = f.col("fe_Eb");
     out.push_back(r);
-  }
+  });
   return out;
 }
 
@@ -571,43 +611,22 @@ struct PinionSample {
 };
 
 std::vector<PinionSample> read_pinion_samples(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
   std::vector<PinionSample> out;
-  std::vector<std::string> header;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> f = split_csv(line);
-    if (f[0] == "key") {
-      header = f;
-      continue;
-    }
-    if (f.size() < 3 || f[1] == "skipped") continue;
-    auto col = [&](const char* name) {
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        if (header[i] == name) return std::stod(f.at(i));
-      }
-      throw std::runtime_error(std::string("no column ") + name + " in " + path);
-    };
-    std::vector<std::string> ov;
-    std::stringstream ss(f[2]);
-    for (std::string t; std::getline(ss, t, ';');) {
-      if (!t.empty()) ov.push_back(t);
-    }
-    const Drive d = load_problem(problem_path(f[1]), ov);
+  for_each_data_row(path, [&](const DataRow& f) {
+    const Drive d = load_problem(problem_path(f.cells[1]), f.overrides());
     const MeshGeometry g = build_mesh_geometry(d);
     const FilletFoundationCompliance ff(g, d.pinion);
-    const double s = col("s_star") * d.pinion.module;
+    const double s = f.col("s_star") * d.pinion.module;
     PinionSample r;
     r.teeth = d.pinion.teeth;
     r.alpha_m = std::max(s, 0.0) / g.pinion.base_radius - g.pinion.half_base_angle;
     r.q = ff.u_f(s) / ff.root_thickness();
     r.theta = ff.theta_f();
     r.tan_a0 = std::tan(d.pinion.pressure_angle);
-    r.analytic = col("analytic_Eb");
-    r.fe = col("fe_Eb");
+    r.analytic = f.col("analytic_Eb");
+    r.fe = f.col("fe_Eb");
     out.push_back(r);
-  }
+  });
   return out;
 }
 
@@ -713,46 +732,25 @@ int fit_coupling(const std::string& paths) {
   std::vector<CouplingSample> rows;
   std::stringstream list(paths);
   for (std::string path; std::getline(list, path, ',');) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::vector<std::string> header;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> f = split_csv(line);
-    if (f[0] == "key") {
-      header = f;
-      continue;
-    }
-    if (f.size() != header.size()) continue;
-    auto col = [&](const char* name) {
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        if (header[i] == name) return std::stod(f.at(i));
-      }
-      throw std::runtime_error(std::string("no column ") + name + " in " + path);
-    };
-    if (col("pairs") != 2) continue;
-    std::vector<std::string> overrides;
-    std::stringstream ov(f[2]);
-    for (std::string t; std::getline(ov, t, ';');) {
-      if (!t.empty()) overrides.push_back(t);
-    }
-    Drive d = load_problem(problem_path(f[1]), overrides);
-    d.effects.rack_span = RackSpanModel::kRigid;
-    d.effects.pair_coupling = false;
-    d.spalls.clear();
-    d.load.force *= col("load_fraction");
-    const MeshState st = MeshStiffnessModel(d).at(col("travel_m"));
-    if (st.pairs.size() != 2) throw std::runtime_error("expected two pairs at a row of " + path);
-    CouplingSample r;
-    r.problem = f[1] + (f[2].empty() ? "" : "|" + f[2]);
-    r.alpha = d.pinion.pressure_angle;
-    r.c1 = st.pairs[0].local();
-    r.c2 = st.pairs[1].local();
-    r.foundations = 0.5 * (st.pairs[0].fillet + st.pairs[0].rack_foundation + st.pairs[1].fillet +
-                           st.pairs[1].rack_foundation);
-    r.k_fe = col("K_fe");
-    rows.push_back(r);
-  }
+    for_each_data_row(path, [&](const DataRow& f) {
+      if (f.col("pairs") != 2) return;
+      Drive d = load_problem(problem_path(f.cells[1]), f.overrides());
+      d.effects.rack_span = RackSpanModel::kRigid;
+      d.effects.pair_coupling = false;
+      d.spalls.clear();
+      d.load.force *= f.col("load_fraction");
+      const MeshState st = MeshStiffnessModel(d).at(f.col("travel_m"));
+      if (st.pairs.size() != 2) throw std::runtime_error("expected two pairs at a row of " + path);
+      CouplingSample r;
+      r.problem = f.cells[1] + (f.cells[2].empty() ? "" : "|" + f.cells[2]);
+      r.alpha = d.pinion.pressure_angle;
+      r.c1 = st.pairs[0].local();
+      r.c2 = st.pairs[1].local();
+      r.foundations = 0.5 * (st.pairs[0].fillet + st.pairs[0].rack_foundation + st.pairs[1].fillet +
+                             st.pairs[1].rack_foundation);
+      r.k_fe = f.col("K_fe");
+      rows.push_back(r);
+    });
   }
   if (rows.size() < 4) throw std::runtime_error("too few double-pair positions in " + paths);
   auto worst = [&](double kappa, const std::function<bool(const CouplingSample&)>& use) {
@@ -856,53 +854,29 @@ Drive with_supported_rack_law(Drive d, double depth, double tooth_height, double
 }
 
 int fit_supports(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
   std::vector<SupportsSample> rows;
-  std::vector<std::string> header;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> f = split_csv(line);
-    if (f[0] == "key") {
-      header = f;
-      continue;
-    }
-    if (f.size() != header.size()) continue;
-    auto col = [&](const char* name) {
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        if (header[i] == name) return std::stod(f.at(i));
-      }
-      throw std::runtime_error(std::string("no column ") + name + " in " + path);
-    };
+  for_each_data_row(path, [&](const DataRow& f) {
     Job j;
-    j.problem = f[1];
-    std::stringstream ss(f[2]);
-    for (std::string t; std::getline(ss, t, ';');) {
-      if (!t.empty()) j.overrides.push_back(t);
-    }
+    j.problem = f.cells[1];
+    j.overrides = f.overrides();
     FeOptions on;
     on.rack_on_supports = true;
     SupportsSample r;
-    r.problem = f[1];
-    r.design = f[2];
+    r.problem = f.cells[1];
+    r.design = f.cells[2];
     const Drive ref = fe_reference_drive(job_drive(j));
     r.drive = rack_on_supports_drive(ref, on);
     r.drive.effects.supported_rack = false;
     r.drive.effects.rack_foundation = true;
     r.drive.effects.fillet_calibration = true;
-    r.drive.load.force *= col("load_fraction");
-    r.depth = col("body_depth_m");
+    r.drive.load.force *= f.col("load_fraction");
+    r.depth = f.col("body_depth_m");
     r.tooth_height = (r.drive.rack.addendum_coef + r.drive.rack.dedendum_coef) * r.drive.pinion.module;
-    r.X = col("travel_m");
-    r.k_fe = col("K_fe");
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == "shares_fe") r.shares = f[i];
-    }
-    for (std::size_t i = 0; i < header.size(); ++i) {
-      if (header[i] == "shares_fe") r.shares = f[i];
-    }
+    r.X = f.col("travel_m");
+    r.k_fe = f.col("K_fe");
+    r.shares = f.text("shares_fe");
     rows.push_back(r);
-  }
+  });
   // beta = b20 + b1 (alpha - 20 deg).
   auto beta_of = [](const SupportsSample& r, double b20, double b1) {
     return std::max(0.0, b20 + b1 * (r.drive.pinion.pressure_angle * 180 / std::numbers::pi - 20));
