@@ -14,6 +14,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/fe/gmsh_library.hpp"
 #include "rackopt/fe/rack_span_fe.hpp"
+#include "rackopt/stiffness/supported_rack.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -160,8 +161,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
       c.pinion_compared = pinion_contact_on_involute(model.geometry(), p.s);
       // The FE single-tooth solve holds the segment's base: on supports the
       // model's rack foundation is the local one, so the held one is compared.
-      const Effects& fx = model.drive().effects;
-      c.rack_analytic = fx.supported_rack && fx.rack_span == RackSpanModel::kCoupled
+      c.rack_analytic = supported_rack_applies(model.drive().effects)
                             ? analytic_tooth_compliance(model.drive(), ToothMember::kRack, p.s)
                             : p.rack.total() + p.rack_foundation;
       row.pairs.push_back(c);

@@ -249,9 +249,7 @@ struct MeshStiffnessModel::Impl {
 
   // Whether adjacent pairs load each other beyond the rack beam
   // (effects.pair_coupling; not in the papers' per-pair method).
-  bool coupled_pairs() const {
-    return drive.effects.pair_coupling && drive.effects.rack_span != RackSpanModel::kPerPair;
-  }
+  bool coupled_pairs() const { return pairs_coupled(drive.effects); }
 
   // Off-diagonal compliance between pairs j and k: the rack beam's
   // influence (coupled body, same segment) plus the pairs' own coupling
@@ -333,15 +331,13 @@ struct MeshStiffnessModel::Impl {
     PairState& p1 = st.pairs[0];
     PairState& p2 = st.pairs[1];
     const double F = drive.load.force;
-    const RackSpanModel mode = drive.effects.rack_span;
-    const bool rigid = mode == RackSpanModel::kRigid || !span_model;
+    const bool rigid = drive.effects.rack_span == RackSpanModel::kRigid || !span_model;
     p1.body = rigid ? 0.0 : span_model->self(p1.a, p1.e);
     p2.body = rigid ? 0.0 : span_model->self(p2.a, p2.e);
     const double x = cross_compliance(p1, p2);
     const double a1 = p1.local() - p1.hertz + p1.body, a2 = p2.local() - p2.hertz + p2.body;
     // state() left each contact term at the whole force F.
     const double c1F = p1.hertz, c2F = p2.hertz;
-    const double c1_0 = law[0].at(0), c2_0 = law[1].at(0);
     // g(0) = x F - d_2(F), g(F) = d_1(F) - x F.
     const double g0 = x * F - (a2 + c2F) * F, gF = (a1 + c1F) * F - x * F;
     if (!(gF > g0)) return false;
@@ -361,8 +357,7 @@ struct MeshStiffnessModel::Impl {
       double lo = 0, hi = F;
       for (int it = 0; it < 60; ++it) {
         const double f2 = F - f1;
-        const double c1f = f1 > law[0].floor ? law[0].at(f1) : c1_0;
-        const double c2f = f2 > law[1].floor ? law[1].at(f2) : c2_0;
+        const double c1f = law[0].at(f1), c2f = law[1].at(f2);  // floored below law.floor
         const double gv = (a1 + c1f) * f1 - (a2 + c2f) * f2 + x * (F - 2 * f1);
         if (gv < 0) lo = f1;
         else hi = f1;

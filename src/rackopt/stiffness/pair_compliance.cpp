@@ -116,8 +116,7 @@ PairCompliance::PairCompliance(const Drive& drive, const MeshGeometry& geo) : im
     }
     // On its supports the beam counts the body's bending and shear: the
     // foundation keeps the zone under the tooth (supported_rack.hpp).
-    const bool supported = fx.supported_rack && fx.rack_span == RackSpanModel::kCoupled;
-    if (supported) {
+    if (supported_rack_applies(fx)) {
       depth = supported_foundation_depth(depth, 2 * geo.rack.half_thickness_at_root,
                                          supported_rack_law().foundation_depth);
     }

@@ -18,7 +18,15 @@
 // own coupling (rack_span.hpp) is separate.
 #pragma once
 
+#include "rackopt/core/drive.hpp"
+
 namespace rackopt {
+
+// Whether adjacent pairs are coupled: effects.pair_coupling, except with
+// rack_span: per_pair (the papers' method, pairs in parallel).
+inline bool pairs_coupled(const Effects& effects) {
+  return effects.pair_coupling && effects.rack_span != RackSpanModel::kPerPair;
+}
 
 // kappa = at_20_deg + per_deg (alpha0 [deg] - 20).
 struct PairCouplingShare {

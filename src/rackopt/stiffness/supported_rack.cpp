@@ -42,7 +42,7 @@ RackSpec rack_with_tooth_layer(const RackSpec& rack, double tooth_height, double
 }
 
 RackSpec rack_beam(const Drive& drive) {
-  if (!drive.effects.supported_rack || drive.effects.rack_span != RackSpanModel::kCoupled) return drive.rack;
+  if (!supported_rack_applies(drive.effects)) return drive.rack;
   const double width = drive.rack.face_width > 0 ? drive.rack.face_width : drive.pinion.face_width;
   const double height = (drive.rack.addendum_coef + drive.rack.dedendum_coef) * drive.pinion.module;
   return rack_with_tooth_layer(drive.rack, height, width,

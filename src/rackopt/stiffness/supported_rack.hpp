@@ -2,8 +2,7 @@
 // to the pair compliance and the hinged beam of rack_span.hpp, fitted on FE
 // mesh positions of racks on their supports (tests/data/fe/supports.csv,
 // docs/models/rack_span.md "Against FE"). Effect `effects.supported_rack`,
-// applied wherever the rack body is flexible (rack_span coupled or
-// per_pair).
+// applied with rack_span: coupled (supported_rack_applies).
 //
 //  * A tooth layer. The beam of rack_span.hpp is the body below the root
 //    line; the teeth stand on it as separate beams, yet their roots bend
@@ -19,9 +18,10 @@
 //    (at most H): the zone under the tooth that the beam does not see.
 //
 // Example:
-//   const SupportedRackLaw law = supported_rack_law();
-//   RackSpec beam = rack_with_tooth_layer(drive.rack, tooth_height, teeth_width, law.tooth_layer);
-//   double depth = supported_foundation_depth(H, root_thickness, law.foundation_depth);
+//   if (supported_rack_applies(drive.effects)) {
+//     RackSpec beam = rack_beam(drive);  // the section with its tooth layer
+//     double depth = supported_foundation_depth(H, root_thickness, supported_rack_law().foundation_depth);
+//   }
 #pragma once
 
 #include "rackopt/core/drive.hpp"
@@ -39,16 +39,22 @@ struct SupportedRackLaw {
 // The fitted law (`fe_calibration --fit supports`).
 SupportedRackLaw supported_rack_law();
 
+// Whether the law applies: effects.supported_rack with rack_span: coupled.
+inline bool supported_rack_applies(const Effects& effects) {
+  return effects.supported_rack && effects.rack_span == RackSpanModel::kCoupled;
+}
+
 // `rack` with a layer of beta * tooth_height, `teeth_width` wide, added on
 // top of its section (directly above the root line): the area, the second
 // moment about the composite's centroid and the shear area (kappa kept) of
 // body + layer. The neutral_axis_depth, from which the contacts' lever arms
-// are measured, stays the body's. beta = 0 returns the section unchanged. Throws std::invalid_argument for
-// a negative beta or a non-positive height or width.
+// are measured, stays the body's. beta = 0 returns the section unchanged.
+// Throws std::invalid_argument for a negative beta or a non-positive height
+// or width.
 RackSpec rack_with_tooth_layer(const RackSpec& rack, double tooth_height, double teeth_width, double beta);
 
-// The rack as the beam of rack_span.hpp sees it in the mesh model: with
-// effects.supported_rack and rack_span coupled, drive.rack with its tooth
+// The rack as the beam of rack_span.hpp sees it in the mesh model: where
+// supported_rack_applies, drive.rack with its tooth
 // layer (the law's beta at the drive's pressure angle, the tooth height
 // (h_a2* + h_f2*) m, the rack face width or else the pinion's); otherwise
 // drive.rack.

@@ -182,7 +182,7 @@ struct WearModel::Impl {
   // The foundations alone (pinion fillet foundation against s, rack tooth
   // foundation against height), for the pairs' coupling.
   std::vector<double> fp, fr;
-  bool coupled_pairs = false;  // effects.pair_coupling, as the mesh model reads it
+  bool coupled_pairs = false;  // pairs_coupled(effects), as the mesh model reads it
   std::optional<PairCompliance> pair;
 
   std::array<HardnessModel, 2> hardness;
@@ -282,7 +282,7 @@ struct WearModel::Impl {
     fp.assign(n + 1, 0.0);
     fr.assign(n + 1, 0.0);
     cr_dy = rack_height / n;
-    coupled_pairs = drive.effects.pair_coupling && drive.effects.rack_span != RackSpanModel::kPerPair;
+    coupled_pairs = pairs_coupled(drive.effects);
     for (int k = 0; k <= n; ++k) {
       // The top node is evaluated exactly at s_end (the tooth model rejects
       // radii beyond the tip, and rounding could put k*ds past it).
@@ -598,7 +598,7 @@ struct WearModel::Impl {
   }
 
   // Unilateral load sharing at every sampled mesh position (rigid rack body,
-  // physics.md 7.6; share_loads). Writes each pair's signed margin: its load
+  // docs/models/wear.md "Load sharing"; share_loads). Writes each pair's signed margin: its load
   // per width f_j / b where it carries load, and where it is open the
   // (negative) approach it lacks over its compliance,
   // (delta - e_j - sum_k x_jk f_k) / (c_j b) [N/m]. Returns the loaded
