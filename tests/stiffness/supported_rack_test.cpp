@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "rackopt/stiffness/rack_foundation.hpp"
 #include "rackopt/stiffness/supported_rack.hpp"
@@ -65,6 +66,26 @@ TEST(SupportedRack, FoundationDepthIsLocalButNeverBelowTheCalibration) {
   EXPECT_GT(law.tooth_layer, 0.0);
   for (double deg : {12.0, 14.0, 20.0, 25.0, 30.0}) EXPECT_GE(law.tooth_layer_at(deg * M_PI / 180), 0.0);
   EXPECT_DOUBLE_EQ(law.tooth_layer_at(20 * M_PI / 180), law.tooth_layer);
+}
+
+TEST(SupportedRack, ShortDeepSpansAreFlaggedOutsideTheFittedRange) {
+  Drive d;
+  d.rack = rectangular_body(0.12, 0.25);
+  d.rack.span = 1.0;  // 4 body depths, as the ship lift
+  d.effects.rack_span = RackSpanModel::kCoupled;
+  d.effects.supported_rack = true;
+  const std::string w = supported_rack_range_warning(d);
+  EXPECT_NE(w.find("4 body depths"), std::string::npos) << w;
+  // At 8 body depths the law is inside the range it was fitted on.
+  d.rack.span = kSupportedRackSlenderSpan * 0.25;
+  EXPECT_EQ(supported_rack_range_warning(d), "");
+  // Without the law (or with a rigid rack body) there is nothing to flag.
+  d.rack.span = 1.0;
+  d.effects.supported_rack = false;
+  EXPECT_EQ(supported_rack_range_warning(d), "");
+  d.effects.supported_rack = true;
+  d.effects.rack_span = RackSpanModel::kRigid;
+  EXPECT_EQ(supported_rack_range_warning(d), "");
 }
 
 }  // namespace

@@ -128,6 +128,7 @@ struct MeshStiffnessModel::Impl {
     A0 = ca * (offset - 0.25 * pitch + shift * std::tan(a0)) + s_p;
 
     if (fx.rack_span != RackSpanModel::kRigid) span_model.emplace(beam, a0, fx);
+    if (std::string w = supported_rack_range_warning(drive); !w.empty()) warnings.push_back(std::move(w));
     if (fx.spalling) map_spalls();
     if (ReliefOnPath r(drive, geo); r.any()) relief.emplace(r);
   }

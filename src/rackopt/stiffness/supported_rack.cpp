@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
+#include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/rack_foundation.hpp"
 
 namespace rackopt {
@@ -47,6 +49,18 @@ RackSpec rack_beam(const Drive& drive) {
   const double height = (drive.rack.addendum_coef + drive.rack.dedendum_coef) * drive.pinion.module;
   return rack_with_tooth_layer(drive.rack, height, width,
                                supported_rack_law().tooth_layer_at(drive.pinion.pressure_angle));
+}
+
+std::string supported_rack_range_warning(const Drive& drive) {
+  if (!supported_rack_applies(drive.effects)) return {};
+  const double depth = rack_body_depth(drive.rack);
+  if (!(depth > 0) || drive.rack.span >= kSupportedRackSlenderSpan * depth) return {};
+  std::ostringstream w;
+  w << "supported rack: the span is " << drive.rack.span / depth << " body depths; the beam law was fitted on spans of "
+    << "at least " << kSupportedRackSlenderSpan
+    << " (within 5.4 % of FE), on shorter ones FE found it from 0.8 % to 10 % too soft "
+       "(docs/models/rack_span.md, \"Against FE\")";
+  return w.str();
 }
 
 double supported_foundation_depth(double body_depth, double root_thickness, double k) {

@@ -24,6 +24,8 @@
 //   }
 #pragma once
 
+#include <string>
+
 #include "rackopt/core/drive.hpp"
 
 namespace rackopt {
@@ -38,6 +40,15 @@ struct SupportedRackLaw {
 
 // The fitted law (`fe_calibration --fit supports`).
 SupportedRackLaw supported_rack_law();
+
+// Spans of at least this many body depths are the slender beams the law was
+// fitted on (within 5.4 % of FE there); the two shorter spans checked came
+// out 0.8 % and 10 % too soft (docs/models/rack_span.md, "Against FE").
+inline constexpr double kSupportedRackSlenderSpan = 8;
+
+// A warning when the law applies to a span shorter than
+// kSupportedRackSlenderSpan body depths (rack_body_depth); empty otherwise.
+std::string supported_rack_range_warning(const Drive& drive);
 
 // Whether the law applies: effects.supported_rack with rack_span: coupled.
 inline bool supported_rack_applies(const Effects& effects) {
