@@ -1,5 +1,5 @@
 // rackopt wear: Archard wear, deterministic wear life and life at
-// reliability R by Monte Carlo (issue 3).
+// reliability R by Monte Carlo.
 #include <chrono>
 #include <filesystem>
 #include <iostream>

@@ -141,7 +141,7 @@ MeshGeometry build_mesh_geometry(const Drive& drive) {
                                             " <= 0 (too few teeth for the dedendum)");
   }
   pin.half_base_angle = kPi / (2.0 * z) + (tan_a - a0) + 2.0 * x * tan_a / z;
-  // Sainsot root angle with the TOOL addendum; independent of x (physics.md 3.1, 16).
+  // Sainsot root angle with the TOOL addendum; independent of x (docs/models/tooth.md, docs/models/geometry.md).
   pin.root_angle = kPi / z - pin.cutter_tip_flat_half_width / pin.pitch_radius;
   if (pin.tip_radius <= pin.base_radius) {
     throw DesignError("no_involute", "pinion tip radius " + mm(pin.tip_radius) +
@@ -193,7 +193,7 @@ MeshGeometry build_mesh_geometry(const Drive& drive) {
                           " below the rack root line (rack dedendum too small)");
   }
 
-  // --- path of contact (physics.md 7.1) --------------------------------------------
+  // --- path of contact (docs/models/geometry.md) --------------------------------------------
   ContactPath& path = g.path;
   path.base_pitch = kPi * m * cos_a;
   path.s_pitch = pin.pitch_radius * sin_a;
@@ -241,7 +241,7 @@ MeshGeometry build_mesh_geometry(const Drive& drive) {
                           ")");
   }
 
-  // --- zones (physics.md 7.2) -------------------------------------------------
+  // --- zones (docs/models/geometry.md) -------------------------------------------------
   const double eps = path.contact_ratio;
   const int n = static_cast<int>(std::floor(eps));
   auto make_zone = [&](int pairs, double loa) {

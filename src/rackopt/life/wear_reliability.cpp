@@ -306,8 +306,8 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     out.summary.failed_evaluations = n;
   }
 
-  // Exact results for one monotone input (issue 3: "the life at R is exact
-  // from that input's quantile").
+  // Exact results for one monotone input: the life at R is the life at that
+  // input's quantile (docs/models/reliability.md).
   const auto t_exact = std::chrono::steady_clock::now();
   if (dim == 1) {
     const reliability::Distribution& d0 = dist[0];

@@ -1,4 +1,4 @@
-// Wear life at reliability R (issue 3; physics.md 12): the deterministic wear
+// Wear life at reliability R (docs/models/reliability.md): the deterministic wear
 // life of the nominal drive, then one wear life per Monte Carlo sample of the
 // problem's random inputs, then the fitted life distribution, R(t) and the life
 // at each requested R (from the fit and empirically, with intervals).

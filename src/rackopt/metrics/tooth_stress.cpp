@@ -102,7 +102,7 @@ RootSection pinion_root_section(const PinionSpec& pinion, const MeshGeometry& g)
   out.chord = 2.0 * d.p.x;
   out.height = d.p.y;
   out.fillet_radius = speed * speed * speed / cross;
-  // Load at the pinion tip: load angle a_Fen = tan(a_a) - alpha_2 (physics.md 2.1, alpha_1 at the tip).
+  // Load at the pinion tip: load angle a_Fen = tan(a_a) - alpha_2 (docs/models/tooth.md, alpha_1 at the tip).
   const double ra = g.pinion.tip_radius, rb = g.pinion.base_radius;
   const double alpha2 = involute_half_angle(pinion, rb);
   out.load_angle = std::sqrt(ra * ra / (rb * rb) - 1.0) - alpha2;
@@ -135,7 +135,7 @@ RootSection rack_root_section(const Drive& drive, const MeshGeometry& g, double 
   out.height = rho * (1.0 - std::sin(p));
   out.fillet_radius = rho;
   out.load_angle = a0;  // the load is normal to the straight flank
-  // Highest rack contact: the start of the path (physics.md 7.2 height above the datum).
+  // Highest rack contact: the start of the path (docs/models/geometry.md: the height above the datum).
   const double yc = g.contact_height_above_datum(g.path.s_start) + g.rack.dedendum;
   const double wc = wf - yc * std::tan(a0);
   out.arm = yc - wc * std::tan(a0) - out.height;

@@ -108,7 +108,7 @@ constexpr KeySpec kKeySpecs[] = {
     {"faults[].depth", QuantityKind::kLength, kMinSmallLength, 1.0, false, false},
     {"numerics.quadrature_order", QuantityKind::kCount, 2, 64, false, false},
     {"numerics.positions_per_period", QuantityKind::kCount, 4, 10000, false, false},
-    // Wear (physics.md 10, 11). Archard K spans mild wear ~1e-8 to severe
+    // Wear (docs/models/wear.md). Archard K spans mild wear ~1e-8 to severe
     // ~1e-2 (10.4); 1e-20..1 leaves room for any reading of a paper's k.
     {"wear.coefficient", QuantityKind::kDimensionless, 1e-20, 1, false, false},
     {"wear.max_depth", QuantityKind::kLength, kMinSmallLength, 1.0, false, false},
@@ -552,7 +552,7 @@ HardnessProfile read_hardness(const MarkedNode& node, const std::string& path) {
     h.core = b.number("core", std::nullopt);
     h.case_depth = b.number("case_depth", std::nullopt);
     h.exponent = b.number("exponent", 3.0);
-    // physics.md 11.2: delta = D / ln((Hs - Hc)/(Hlim - Hc))^(1/n) needs Hc < Hlim < Hs.
+    // docs/models/wear.md: delta = D / ln((Hs - Hc)/(Hlim - Hc))^(1/n) needs Hc < Hlim < Hs.
     b.check_range("core", h.core, 0, h.surface, true, true,
                   " (below the surface hardness " + format_quantity(h.surface, QuantityKind::kHardness) +
                       ": a case-hardened profile drops from surface to core)");
@@ -762,7 +762,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
     }
   } else {
     // Half the root radius: h_f = r_f/r_int = 2, inside the range Sainsot's
-    // fillet-foundation fit was made for (about 1.4..7, physics.md 3.2).
+    // fillet-foundation fit was made for (about 1.4..7, docs/models/tooth.md).
     pin.bore_radius = root_radius > 0 ? 0.5 * root_radius : 0.0;
   }
   pin.material = find_material(materials, p, "material");

@@ -1,5 +1,5 @@
 // Probability distributions of uncertain inputs and of wear lives
-// (physics.md §12; issue 3 "Reliability").
+// (docs/models/reliability.md).
 //
 // One small value type covers the five families the reliability work needs.
 // Sampling is ALWAYS done by `quantile(u)` of a uniform u in (0,1): pseudo-random

@@ -1,6 +1,7 @@
 // Adaptive, verified tabulation of an expensive scalar function of one
-// variable, for Monte Carlo with one random input (issue 3: life at R from
-// 1000 samples in < 100 ms): a few dozen evaluations replace one per sample.
+// variable, for Monte Carlo with one random input (a life at R from 1000
+// samples in well under 100 ms): a few dozen evaluations replace one per
+// sample.
 //
 // The interpolant is Steffen's (1990) monotone piecewise cubic Hermite
 // ("A simple method for monotonic interpolation in one dimension", A&A 239,

@@ -1,5 +1,5 @@
 // Kolmogorov-Smirnov goodness of fit when the parameters are estimated from
-// the same sample (physics.md §12.1 step 4), by parametric bootstrap.
+// the same sample (docs/models/reliability.md, "Kolmogorov–Smirnov with estimated parameters"), by parametric bootstrap.
 //
 // Why a bootstrap: the classical critical value c(alpha)/sqrt(N)
 // (1.358/sqrt(N) at 5%) assumes a fully specified distribution. A fitted

@@ -1,4 +1,4 @@
-// Maximum-likelihood fits of life distributions (physics.md §12.1 step 3).
+// Maximum-likelihood fits of life distributions (docs/models/reliability.md, "Maximum-likelihood fits").
 //
 // Samples are lives (any positive unit; the reliability summary uses seconds).
 // Every fit is scale-equivariant: fitting c*x gives the same shapes and c times

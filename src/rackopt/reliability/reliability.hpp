@@ -1,5 +1,5 @@
-// Wear-life reliability from life samples (physics.md §12.1 steps 3-5;
-// issue 3 "Reliability"): R(t) and the life at reliability R, from a fitted
+// Wear-life reliability from life samples (docs/models/reliability.md):
+// R(t) and the life at reliability R, from a fitted
 // distribution and empirically, each with a confidence interval.
 //
 // Lives are in seconds in the summary (any unit elsewhere). Nothing here knows

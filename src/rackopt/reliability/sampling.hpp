@@ -1,5 +1,5 @@
 // Point sets in the open unit cube (0,1)^d for Monte Carlo, and a
-// thread-count-independent evaluator (issue 3 "Reliability"; physics.md §12.1).
+// thread-count-independent evaluator (docs/models/reliability.md).
 //
 // Determinism: every pseudo-random value is a pure function of
 // (seed, sample index, dimension) -- a counter-based hash, no generator state --

@@ -1,6 +1,6 @@
 // Textbook influence functions of a prismatic beam on two hinges at x = 0 and
 // x = l (simply supported: v(0) = v(l) = 0, no end moments). Building blocks
-// of the rack body model (rack_span.hpp, physics.md 6); docs/models/rack_span.md
+// of the rack body model (rack_span.hpp); docs/models/rack_span.md
 // has the derivations.
 //
 // Sign convention: x along the beam, v up, u along +x, rotations and couples

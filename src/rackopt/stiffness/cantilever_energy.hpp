@@ -1,7 +1,7 @@
 // Strain-energy compliance of a straight, non-uniform cantilever loaded by one
 // inclined force, and the Gauss-Legendre rule used to integrate it.
 //
-// This is the common core of the tooth models (physics.md 2.1, 5.1, 9.1): a
+// This is the common core of the tooth models (docs/models/tooth.md): a
 // tooth is a cantilever clamped at its root (axial coordinate u = 0) and
 // loaded at u = u_c by a unit force split into a transverse part (bending +
 // shear) and a compressive axial part acting at a lateral offset from the
@@ -50,7 +50,7 @@ struct CantileverSection {
 
 // Rectangular tooth slice of half-thickness h_x and face width b, optionally
 // with a pit of width w_s (across the face) and depth h_s (into the loaded
-// flank) cut from the loaded side (physics.md 9.1, exact form):
+// flank) cut from the loaded side (docs/models/tooth.md, exact form):
 //   A_s = 2 h_x b - h_s w_s,
 //   I_cl = (2/3) h_x^3 b - (1/3) w_s [h_x^3 - (h_x - h_s)^3]  (about the centre line),
 //   e_s = -w_s h_s (h_x - h_s/2) / A_s,  I_s = I_cl - A_s e_s^2.
@@ -75,7 +75,7 @@ struct CantileverMaterial {
   double shear_factor = 1.2;    // Timoshenko factor of a rectangle
 };
 
-// Compliance densities d(1/k)/du at one station (physics.md 2.1 with the
+// Compliance densities d(1/k)/du at one station (docs/models/tooth.md with the
 // section's own centroid): bending M^2/(E I) with
 // M = transverse (u_c - u) - axial (offset - e), shear kappa transverse^2/(G A),
 // axial axial^2/(E A).

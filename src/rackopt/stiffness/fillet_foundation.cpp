@@ -11,7 +11,7 @@
 namespace rackopt {
 namespace {
 
-// physics.md 3.2, rows A..F for L*, M*, P*, Q* (Sainsot et al. 2004; digits
+// docs/models/tooth.md, rows A..F for L*, M*, P*, Q* (Sainsot et al. 2004; digits
 // identical in petrobras/ross, the PHM-BGU toolbox and van Eyk's solver).
 struct Row {
   double A, B, C, D, E, F;

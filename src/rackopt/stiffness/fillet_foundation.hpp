@@ -1,5 +1,5 @@
 // Fillet-foundation (gear body) compliance of the pinion: Sainsot, Velex &
-// Duverger (2004), physics.md 3. Uses the tool addendum in theta_f (through
+// Duverger (2004), docs/models/tooth.md. Uses the tool addendum in theta_f (through
 // MeshGeometry::pinion.root_angle) and the full u_f definition with the
 // -h tan(alpha_m) term (both are known bugs in public codes).
 //
@@ -13,7 +13,7 @@
 
 namespace rackopt {
 
-// The four coefficient functions of Sainsot et al. (physics.md 3.2):
+// The four coefficient functions of Sainsot et al. (docs/models/tooth.md):
 // X*(h_f, theta_f) = A/theta_f^2 + B h_f^2 + C h_f/theta_f + D/theta_f + E h_f + F.
 struct SainsotCoefficients {
   double L = 0, M = 0, P = 0, Q = 0;
@@ -29,7 +29,7 @@ class FilletFoundationCompliance {
 
   // [m/N] for a unit normal load at LOA coordinate s, effective face width
   // face_width (the integrator passes b - w_s while a spall is under the
-  // contact, physics.md 9.3):
+  // contact, docs/models/tooth.md):
   //   1/k_f = cos^2(a_m)/(E b) [L* (u_f/S_f)^2 + M* u_f/S_f + P* (1 + Q* tan^2 a_m)]
   // with a_m = alpha_1 = s/r_b - alpha_2 (load angle; s <= 0 is evaluated at
   // the base circle), u_f = y_c - h tan(a_m) - r_f, S_f = 2 r_f theta_f.

@@ -1,4 +1,4 @@
-// Hertzian contact compliance of a rack-pinion tooth pair (physics.md 4).
+// Hertzian contact compliance of a rack-pinion tooth pair (docs/models/tooth.md).
 #pragma once
 
 #include "rackopt/core/drive.hpp"
@@ -9,7 +9,7 @@ namespace rackopt {
 // Throws InputError for a non-positive modulus or nu outside (-1, 0.5].
 double effective_modulus(const Material& a, const Material& b);
 
-// Linearised 2-D contact (Yang & Lin 1987, physics.md 4.1): c_h = 2/(pi b E*)
+// Linearised 2-D contact (Yang & Lin 1987, docs/models/tooth.md): c_h = 2/(pi b E*)
 // [m/N], load and curvature independent. Throws InputError for b <= 0 or
 // E* <= 0.
 double hertz_linear_compliance(double e_star, double face_width);

@@ -563,7 +563,7 @@ struct MeshStiffnessModel::Impl {
     }
     // One beam shared by all pairs, and the pairs' own coupling:
     // C = diag(c_j) + C_b + C_pairs; K = 1^T C^-1 1.
-    // Contact is unilateral (physics.md 7.6): the beam can carry a contact
+    // Contact is unilateral (docs/models/mesh.md): the beam can carry a contact
     // away from the pinion faster than the common approach, and that pair
     // then opens. Solve on the active set, dropping the most negative share
     // until all shares are >= 0 (at most n - 1 drops; one pair always stays).

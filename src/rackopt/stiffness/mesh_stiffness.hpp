@@ -3,7 +3,7 @@
 // (pair_compliance.hpp: pinion tooth, fillet foundation, contact, rack tooth
 // and its foundation), the rack body shared by
 // all pairs through one flexibility matrix, the mesh stiffness and each pair's
-// load share (physics.md 6.3, 7.2).
+// load share (docs/models/rack_span.md, docs/models/geometry.md).
 //
 // Example:
 //   Drive drive = load_problem("problems/rack_railway.yaml");

@@ -32,7 +32,7 @@ void require_positive(double value, const char* key, const char* what) {
 }  // namespace
 
 struct PinionToothCompliance::Impl {
-  // Geometry (physics.md 2.2 / 2.4 symbols).
+  // Geometry (docs/models/tooth.md symbols).
   double rb = 0, alpha2 = 0, rf = 0, ra = 0;
   double alpha_u = 0;           // upper (root) limit of the involute integrals
   bool segment = false;         // 2.4 straight segment present and switched on
@@ -58,7 +58,7 @@ struct PinionToothCompliance::Impl {
   }
   double half_thickness(double r) const { return r >= rb ? rb * involute_H(alpha_at_radius(r)) : h1; }
 
-  // Compliance densities per unit alpha of the involute part (physics.md 2.2),
+  // Compliance densities per unit alpha of the involute part (docs/models/tooth.md),
   // with a pit of width ws / depth hs when both are positive (9.1-9.2).
   ToothCompliance density(double alpha, double c1, double s1, double ws, double hs) const {
     const double tau = alpha2 - alpha, sa = std::sin(alpha), ca = std::cos(alpha);
@@ -138,7 +138,7 @@ struct PinionToothCompliance::Impl {
     return total;
   }
 
-  // Straight segment below the base circle, closed form (physics.md 2.4).
+  // Straight segment below the base circle, closed form (docs/models/tooth.md).
   // The cubic difference is factored so that cos(alpha_1) cancels exactly:
   // A^3 - B^3 = (A - B)(A^2 + AB + B^2), A - B = c1 (cos a2 - (r_f/r_b) cos a3).
   ToothCompliance segment_closed_form(double c1, double s1) const {

@@ -1,5 +1,5 @@
 // Pinion tooth bending, shear and axial-compression compliance by the
-// potential-energy method (Yang & Lin 1987; Tian 2004): physics.md 2.2 for the
+// potential-energy method (Yang & Lin 1987; Tian 2004): docs/models/tooth.md for the
 // involute part, 2.4 (Chen & Shao 2011) for the straight part below the base
 // circle, 9.1-9.2 for a spalled band (centroid-corrected section).
 //

@@ -1,5 +1,5 @@
 // Rack body on two hinges: influence coefficients along the line of action
-// (physics.md 6; derivation in docs/models/rack_span.md).
+// (derivation in docs/models/rack_span.md).
 #include "rackopt/stiffness/rack_span.hpp"
 
 #include <algorithm>

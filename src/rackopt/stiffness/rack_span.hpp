@@ -1,4 +1,4 @@
-// The rack body between two hinges as a beam (physics.md 6): influence
+// The rack body between two hinges as a beam (docs/models/rack_span.md): influence
 // coefficients along the line of action between contacts on one segment.
 //
 // A unit force along the LOA at a contact at abscissa a (from the left hinge)
@@ -11,8 +11,8 @@
 // optional axial (effects.body_axial); pin-pin: both hinges fix x;
 // pin-roller: only the left one. Both hinges fix y.
 //
-// docs/models/rack_span.md derives every term. Compared with physics.md 6.2
-// the Timoshenko shear has one more term, c^2 e_j e_k / (l kappa G A): a couple
+// docs/models/rack_span.md derives every term. Compared with the usual
+// single-load beam formulas the Timoshenko shear has one more term, c^2 e_j e_k / (l kappa G A): a couple
 // is balanced by hinge reactions, so it causes a constant shear force over the
 // span whose shear strain rotates every section.
 #pragma once

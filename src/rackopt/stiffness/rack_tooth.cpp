@@ -19,7 +19,7 @@ std::string mm(double metres) {
 }
 
 // Below this flank angle the closed-form bending bracket loses digits to
-// cancellation (physics.md 5.2): use quadrature instead.
+// cancellation (docs/models/tooth.md): use quadrature instead.
 constexpr double kSmallAngle = 5.0 * std::numbers::pi / 180.0;
 
 }  // namespace

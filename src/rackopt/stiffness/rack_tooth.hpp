@@ -1,10 +1,10 @@
 // Straight-sided trapezoid rack tooth as a cantilever on the root line:
-// closed-form bending, shear and axial compliances (physics.md 5.2);
+// closed-form bending, shear and axial compliances (docs/models/tooth.md);
 // numerical quadrature with reduced sections for a spalled band (9.1).
 //
 // Reads from MeshGeometry only: pressure_angle, rack.dedendum, rack.addendum,
 // rack.half_thickness_at_root (w_f), pinion.pitch_radius,
-// profile_shift_length and clearance (for the contact height, physics.md 7.2).
+// profile_shift_length and clearance (for the contact height, docs/models/geometry.md).
 // The values are copied: the object does not keep a reference to geometry.
 #pragma once
 
@@ -30,7 +30,7 @@ class RackToothCompliance {
 
   // Unit normal load at LOA coordinate s; the contact is at height
   // y_c = dedendum + h(s) above the root line with
-  // h(s) = r sin^2 a0 - s sin a0 + x m + Delta (physics.md 7.2). s < 0 is
+  // h(s) = r sin^2 a0 - s sin a0 + x m + Delta (docs/models/geometry.md). s < 0 is
   // evaluated at s = 0 (as the pinion does).
   ToothCompliance at(double s, const SpallBand* spall = nullptr) const;
   // Same, by contact height y_c above the root line [m], clamped to the tooth

@@ -12,7 +12,7 @@ struct ToothCompliance {
 };
 
 // Material removed by a spall from one flank over a band of tooth height,
-// in the member's own terms (physics.md 9.1). depth is measured normal to the
+// in the member's own terms (docs/models/tooth.md). depth is measured normal to the
 // flank (into the half-thickness), width across the face.
 struct SpallBand {
   double low = 0.0;    // pinion: lower edge radius [m]; rack: lower edge height above the root line [m]

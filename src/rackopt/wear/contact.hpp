@@ -1,5 +1,5 @@
 // Contact conditions along the rack-pinion path of contact for Archard wear:
-// Hertz line contact (physics.md 4.3, 7.5), rolling and sliding speeds
+// Hertz line contact (docs/models/wear.md), rolling and sliding speeds
 // (7.4) and the wear of one pass (10.2).
 //
 // LOA coordinate s is measured from the pinion base-circle tangency point T
@@ -21,7 +21,7 @@ struct HertzLineContact {
 HertzLineContact hertz_line_contact(double load_per_width, double effective_radius, double e_star);
 
 // Rolling and sliding of the contact at LOA coordinate s, per unit pinion
-// angular speed (physics.md 7.4): pinion rolling speed v1 = s (involute
+// angular speed (docs/models/wear.md): pinion rolling speed v1 = s (involute
 // curvature radius), rack rolling speed v2 = s_P (constant), sliding
 // |v1 - v2| = |s - s_P|.
 //
@@ -41,7 +41,7 @@ class RackPinionSliding {
   // |v1 - v2|/v_i. The wear per pass at a flank point is k w times this.
   double pinion_sliding_ratio(double s) const { return sliding(s) / pinion_rolling(s); }
   double rack_sliding_ratio(double s) const { return sliding(s) / s_pitch_; }
-  // Signed specific sliding (physics.md 7.4): zeta1 = 1 - s_P/s, zeta2 = 1 - s/s_P.
+  // Signed specific sliding (docs/models/wear.md): zeta1 = 1 - s_P/s, zeta2 = 1 - s/s_P.
   double pinion_specific_sliding(double s) const { return 1.0 - s_pitch_ / pinion_rolling(s); }
   double rack_specific_sliding(double s) const { return 1.0 - s / s_pitch_; }
 
@@ -50,7 +50,7 @@ class RackPinionSliding {
 };
 
 // Archard wear depth of one pass of a flank point through a contact band
-// (Flodin & Andersson 1997; physics.md 10.2):
+// (Flodin & Andersson 1997; docs/models/wear.md):
 //   dh = k w |v1 - v2|/v_i = k p_mean s_i,  s_i = 2 a |v1 - v2|/v_i,
 // with k = K/H [m^2/N]. Not p0: that over-predicts by 4/pi.
 inline double archard_pass_wear(double k, double load_per_width, double sliding_ratio) {

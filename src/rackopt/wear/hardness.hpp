@@ -1,10 +1,10 @@
-// Flank hardness versus depth below the original surface (physics.md 11).
+// Flank hardness versus depth below the original surface (docs/models/wear.md).
 //
 // Measured data (a polynomial fit or a table) is trusted only where it was
 // measured: beyond that, or wherever the data falls below the core hardness,
 // the hardness is clamped to the core value and the point is flagged so that
 // the caller can warn once. Hardness is never extrapolated to zero or below
-// (the seed 004 cubic reaches 0 HB at 11.6 mm, physics.md 11.3).
+// (the seed 004 cubic reaches 0 HB at 11.6 mm, docs/models/wear.md).
 #pragma once
 
 #include <string>
@@ -43,7 +43,7 @@ class HardnessModel {
   //                 max(., core), core beyond the last depth;
   //  case_hardened: H_c + (H_s - H_c) exp(-(h/delta)^n),
   //                 delta = D_eff / [ln((H_s - H_c)/(H_lim - H_c))]^(1/n),
-  //                 so H(D_eff) = H_lim exactly (physics.md 11.2). Never flagged.
+  //                 so H(D_eff) = H_lim exactly (docs/models/wear.md). Never flagged.
   Value evaluate(double depth) const;
   double operator()(double depth) const { return evaluate(depth).hardness; }
 

@@ -1,17 +1,17 @@
-// Deterministic Archard wear life of a rack drive (physics.md 7.4-7.6, 10, 11).
+// Deterministic Archard wear life of a rack drive (docs/models/wear.md, docs/models/mesh.md).
 //
 // Both flanks are discretised along the path of contact: point i of each
 // member is the material point that meets the other member at LOA coordinate
 // s_i, s_start <= s_i <= s_end (wear.profile_points points). A "pass" is one
 // mesh of a tooth pair: the contact sweeps once through the whole path. Per
-// pass, a flank point at s receives (Flodin & Andersson 1997, physics.md 10.2)
+// pass, a flank point at s receives (Flodin & Andersson 1997, docs/models/wear.md)
 //   pinion: dh = K/H(h) <w> |s - s_P| / s,   rack: dh = K/H(h) <w> |s - s_P| / s_P,
 // where H(h) is the hardness at the depth already worn and <w> is the load per
 // unit width of the pair when the contact passes the point, averaged over the
 // Hertz band with the elliptic pressure weight (so load jumps at the zone
 // transitions are seen through the contact band, not as points).
 // The pair loads come from the tooth models' local compliances with a rigid
-// rack body and unilateral contact on the worn profiles (physics.md 7.6).
+// rack body and unilateral contact on the worn profiles (docs/models/mesh.md).
 // docs/models/wear.md has the equations, the choices and the measured cost.
 //
 // Example:
@@ -41,12 +41,12 @@ struct WearSample {
   // finite value, 0 included: "not sampled" is only the empty optional): the path
   // keeps its pinion-tip end s_end and starts at s_end - eps p_b, i.e. the
   // rack datum sits at the clearance that puts the rack tip there
-  // (physics.md 7.1-7.2: Delta = (eps_nominal - eps) p_b sin a0 for a start
+  // (docs/models/geometry.md: Delta = (eps_nominal - eps) p_b sin a0 for a start
   // limited by the rack tip). Below max(1, wear.min_contact_ratio) the sample
   // fails at once (life 0, criterion "initial_contact_ratio"); above the largest
   // contact ratio this pair can have (zero clearance, interference limits) it
   // fails at once with "contact_ratio_above_max" (seed 004 eq. 14 corrected,
-  // physics.md 12.1: reliability needs [eps] <= eps <= eps_max).
+  // docs/models/reliability.md: reliability needs [eps] <= eps <= eps_max).
   std::optional<double> contact_ratio;
 };
 
