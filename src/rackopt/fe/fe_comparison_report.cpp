@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/output/plot.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -218,8 +219,11 @@ std::string fe_comparison_gnuplot(const FeComparison& c, const std::string& titl
   o << "EOD\n";
   o << "set terminal pngcairo size 1200,700 noenhanced font ',11'\n";
   o << "set output '" << png_name << "'\n";
-  o << "set title '" << title << ": mesh stiffness, analytic (" << (c.fe.rack_on_supports ? "rack on its supports" : "rigid rack body")
-    << ") vs FE, level " << c.fe.level << "'\n";
+  o << "set title "
+    << gnuplot_quote(title + ": mesh stiffness, analytic (" +
+                     (c.fe.rack_on_supports ? "rack on its supports" : "rigid rack body") + ") vs FE, level " +
+                     std::to_string(c.fe.level))
+    << "\n";
   o << "set grid\nset key outside right\n";
   o << "set xlabel 'travel of the pitch point [m]'\nset ylabel 'mesh stiffness [MN/m]'\n";
   o << "plot $analytic using 1:($2/1e6) with lines lw 2 title 'analytic', \\\n"

@@ -33,6 +33,15 @@ std::string shell_quote(const std::string& text) {
   return out + "'";
 }
 
+std::string gnuplot_quote(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) {
+    if (c == '\'') out += '\'';
+    out += c;
+  }
+  return out + "'";
+}
+
 double plot_time_limit_seconds() {
   const char* env = std::getenv("RACKOPT_PLOT_TIMEOUT");
   if (env != nullptr && *env != '\0') {

@@ -33,4 +33,8 @@ double plot_time_limit_seconds();
 // `text` quoted for /bin/sh as one word.
 std::string shell_quote(const std::string& text);
 
+// `text` as a gnuplot single-quoted string (a quote inside is doubled), so a
+// problem or study name with an apostrophe cannot break a plot script.
+std::string gnuplot_quote(const std::string& text);
+
 }  // namespace rackopt

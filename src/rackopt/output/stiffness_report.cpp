@@ -7,6 +7,7 @@
 #include "rackopt/stiffness/iso_single_stiffness.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/output/plot.hpp"
 
 namespace rackopt {
 namespace {
@@ -61,7 +62,7 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
   auto onoff = [](bool b) { return b ? "on" : "off"; };
   const char* span = e.rack_span == RackSpanModel::kRigid     ? "rigid"
                      : e.rack_span == RackSpanModel::kCoupled ? "coupled (one beam for all pairs)"
-                                                              : "per pair (seed 000)";
+                                                              : "per pair (the rack railway paper)";
   const char* hertz = e.hertz == HertzModel::kOff      ? "off"
                       : e.hertz == HertzModel::kLinear ? "linear"
                                                        : "Weber-Banaschek (load dependent, plane stress)";
@@ -268,7 +269,7 @@ std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title,
   o << "set datafile separator ','\n";
   o << "set terminal pngcairo size 1400,1200 noenhanced font ',11'\n";
   o << "set output '" << png_name << "'\n";
-  o << "set multiplot layout 3,1 title '" << title << "'\n";
+  o << "set multiplot layout 3,1 title " << gnuplot_quote(title) << "\n";
   o << "set grid\nset key outside right\n";
   o << "set ylabel 'mesh stiffness [MN/m]'\nset logscale y\n";
   o << "plot '" << csv_name << "' using 1:($2/1e6) with lines lw 2 title 'coupled mesh', \\\n"

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/output/plot.hpp"
 
 namespace rackopt {
 namespace {
@@ -134,7 +135,7 @@ std::string life_histogram_csv(const WearReliabilityResult& r, int bins) {
 
 static std::string gp_header(const std::string& title, const std::string& png) {
   return "set datafile separator ','\nset terminal pngcairo size 1200,750 noenhanced font ',11'\n"
-         "set output '" + png + ".tmp'\nset title '" + title + "'\nset grid\nset key outside right\n";
+         "set output '" + png + ".tmp'\nset title " + gnuplot_quote(title) + "\nset grid\nset key outside right\n";
 }
 
 std::string wear_profile_gnuplot(const std::string& title) {

@@ -160,15 +160,6 @@ std::string csv_field(const std::string& s) {
   return out + "\"";
 }
 
-// gnuplot single-quoted string
-std::string gq(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += '\'';
-    out += c;
-  }
-  return out + "'";
-}
 
 std::string axis_label(const std::string& name, const std::string& display_unit) {
   return display_unit.empty() ? name : name + " [" + display_unit + "]";
@@ -447,14 +438,14 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
   o << gp_header("pareto.png", n == 2 ? 1100 : 1800, n == 2 ? 800 : 650);
   o << "set key outside bottom center horizontal\n";
   if (pairs.size() > 1) {
-    o << "set multiplot layout 1," << pairs.size() << " title " << gq(spec.name + ": Pareto front") << "\n";
+    o << "set multiplot layout 1," << pairs.size() << " title " << gnuplot_quote(spec.name + ": Pareto front") << "\n";
   } else {
-    o << "set title " << gq(spec.name + ": Pareto front") << "\n";
+    o << "set title " << gnuplot_quote(spec.name + ": Pareto front") << "\n";
   }
   const int chosen = front.col("chosen");
   for (const auto& [a, b] : pairs) {
-    o << "set xlabel " << gq(axis_label(spec.objectives[a].label, unit[a].display)) << "\n";
-    o << "set ylabel " << gq(axis_label(spec.objectives[b].label, unit[b].display)) << "\n";
+    o << "set xlabel " << gnuplot_quote(axis_label(spec.objectives[a].label, unit[a].display)) << "\n";
+    o << "set ylabel " << gnuplot_quote(axis_label(spec.objectives[b].label, unit[b].display)) << "\n";
     o << "plot ";
     if (!ecols.empty()) {
       // ok and not a finite-difference probe
@@ -466,7 +457,7 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
         e << "(" << gate << " ? column(" << ecols[2 + k] << ")/" << unit[k].factor << " : 1/0)";
         return e.str();
       };
-      o << gq(eval_name) << " skip 1 using " << ev(a) << ":" << ev(b)
+      o << gnuplot_quote(eval_name) << " skip 1 using " << ev(a) << ":" << ev(b)
         << " with points pt 7 ps 0.5 lc rgb '#c8c8c8' title 'every evaluation', \\\n     ";
     }
     o << "'front.csv' skip 1 using " << gp_value(col[a], unit[a].factor) << ":" << gp_value(col[b], unit[b].factor)
@@ -483,9 +474,9 @@ std::string history_gnuplot(const StudySpec& spec, const std::string& label, std
   const MetricUnit u = metric_unit(label);
   std::ostringstream o;
   o << gp_header("history.png", 1100, 700);
-  o << "set title " << gq(spec.name + ": convergence") << "\n";
+  o << "set title " << gnuplot_quote(spec.name + ": convergence") << "\n";
   o << "set xlabel 'evaluation'\nset xrange [0:" << std::max<std::size_t>(evaluations, 1) << "]\n";
-  o << "set ylabel " << gq("best feasible " + axis_label(label, u.display)) << "\n";
+  o << "set ylabel " << gnuplot_quote("best feasible " + axis_label(label, u.display)) << "\n";
   o << "set key top right\n";
   o << "plot 'history.csv' skip 1 using 1:" << gp_value(2, u.factor) << " with steps lw 2 title 'best feasible so far'\n";
   return o.str();
@@ -499,7 +490,7 @@ std::string sweep_gnuplot(const StudySpec& spec, const DesignTable& t, const std
   std::ostringstream o;
   o << gp_header("sweep.png", static_cast<int>(std::max<std::size_t>(2, nv) * 450),
                  static_cast<int>(std::max<std::size_t>(1, nm) * 330 + 60));
-  o << "set multiplot layout " << nm << "," << nv << " title " << gq(spec.name + ": sweep responses") << "\n";
+  o << "set multiplot layout " << nm << "," << nv << " title " << gnuplot_quote(spec.name + ": sweep responses") << "\n";
   o << "unset key\n";
   for (std::size_t m = 0; m < nm; ++m) {
     const MetricUnit mu = metric_unit(labels[m]);
@@ -507,8 +498,8 @@ std::string sweep_gnuplot(const StudySpec& spec, const DesignTable& t, const std
     for (std::size_t v = 0; v < nv; ++v) {
       const VariableUnit vu = variable_unit(spec.variables[v]);
       const int vc = t.col(var_col(spec.variables[v]));
-      o << "set xlabel " << gq(axis_label(spec.variables[v].key, vu.display)) << "\n";
-      o << "set ylabel " << gq(axis_label(labels[m], mu.display)) << "\n";
+      o << "set xlabel " << gnuplot_quote(axis_label(spec.variables[v].key, vu.display)) << "\n";
+      o << "set ylabel " << gnuplot_quote(axis_label(labels[m], mu.display)) << "\n";
       // infeasible grey behind, feasible on top
       o << "plot 'sweep.csv' skip 1 using " << gp_value(vc, vu.factor) << ":"
         << "(column(" << feasible << ")==0 ? " << gp_value(mc, mu.factor) << " : 1/0)"
