@@ -1,5 +1,5 @@
-// Benchmarks of the wear life and of the wear life at reliability R (issue 3
-// "Accuracy and speed": one deterministic life < 1 ms, life at R from 1000
+// Benchmarks of the wear life and of the wear life at reliability R (targets:
+// one deterministic life < 1 ms, life at R from 1000
 // samples < 100 ms, one core). docs/performance.md records the figures.
 //   ./build/wear_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // The 10^4-sample runs without the table take ~10 s per iteration; skip them with
@@ -23,7 +23,7 @@
 
 namespace {
 
-// The calibrated seed 004 drive: 240 profile points, update_profile off,
+// The calibrated the wear paper's drive: 240 profile points, update_profile off,
 // contact ratio N(1.44, 0.038), R = 0.9 / 0.95 / 0.99, 5 times.
 rackopt::Drive ship_lift() {
   return rackopt::load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");

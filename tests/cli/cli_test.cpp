@@ -57,7 +57,7 @@ TEST(Cli, CheckPrintsGeometryAndSucceeds) {
   const CliResult r = run("check problems/rack_railway.yaml");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("contact ratio"), std::string::npos);
-  EXPECT_NE(r.out.find("UNDERCUT"), std::string::npos);  // seed 000's pinion is undercut (physics.md 14.1)
+  EXPECT_NE(r.out.find("UNDERCUT"), std::string::npos);  // the rack railway paper's pinion is undercut (docs/models/geometry.md)
 }
 
 TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {

@@ -124,7 +124,7 @@ int wait_exit(pid_t pid) {
   return -1;
 }
 
-// A 20 x 20 grid sweep on the seed 000 problem with a fine travel sampling
+// A 20 x 20 grid sweep on the rack railway paper's problem with a fine travel sampling
 // (a few ms per design, so that a run lasts long enough to be interrupted).
 // The objective has a fixed scale, so no start design is evaluated: the
 // study needs exactly kSweepSize evaluations.

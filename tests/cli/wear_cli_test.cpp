@@ -1,6 +1,6 @@
-// `rackopt wear` end to end, and the seed 004 validation of issue 3: the
+// `rackopt wear` end to end, and the wear paper's validation: the
 // shipped ship_lift problem reproduces the paper's reliability table
-// (physics.md 12.2) within 0.05 and its 1000 lives pass the gamma fit at 5 %.
+// (docs/models/reliability.md) within 0.05 and its 1000 lives pass the gamma fit at 5 %.
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -55,7 +55,7 @@ class RemoveTmpRoot : public ::testing::Environment {
 };
 [[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
 
-// Seed 004's reliability table (physics.md 12.2). The 40-year row is not in
+// The wear paper's reliability table (docs/models/reliability.md). The 40-year row is not in
 // the +-0.05 requirement (it is inconsistent with any fitted distribution);
 // it is checked loosely below.
 const std::map<double, double> kSeed004R{{55, 0.9743}, {60, 0.7949}, {65, 0.4054}, {75, 0.0135}};

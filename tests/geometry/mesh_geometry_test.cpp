@@ -1,6 +1,6 @@
 // Contact path, contact ratio, zones and design checks of build_mesh_geometry.
-// Each expected number says where it comes from (physics.md section or an
-// independent closed form evaluated here).
+// Each expected number says where it comes from (a docs/models page, one of
+// the papers, or an independent closed form evaluated here).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,7 +48,7 @@ double length_with_at_least(const MeshGeometry& g, int k) {
 }
 
 TEST(MeshGeometry, Seed000AsStated) {
-  // physics.md 14.1 (values printed to 0.01 mm).
+  // docs/models/geometry.md (values printed to 0.01 mm).
   Drive d = seed000_drive();
   const MeshGeometry g = build_mesh_geometry(d);
   EXPECT_NEAR(g.pinion.pitch_radius, 350.14 * kMm, 0.006 * kMm);
@@ -70,13 +70,13 @@ TEST(MeshGeometry, Seed000AsStated) {
   EXPECT_LT(g.path.contact_ratio, 1.7263);
   EXPECT_GT(g.pinion.form_radius, g.pinion.base_radius);
   ASSERT_EQ(g.zones.size(), 2u);
-  EXPECT_EQ(g.zones[0].pairs, 1);  // physics.md 14.1: no triple contact physically
+  EXPECT_EQ(g.zones[0].pairs, 1);  // docs/models/geometry.md: no triple contact physically
   EXPECT_EQ(g.zones[1].pairs, 2);
   EXPECT_FALSE(g.warnings.empty());
-  std::printf("seed 000 (interference limited): r_form = %.3f mm, s_form = %.3f mm, eps = %.5f\n",
+  std::printf("the rack railway paper (interference limited): r_form = %.3f mm, s_form = %.3f mm, eps = %.5f\n",
               g.pinion.form_radius / kMm, g.path.s_form / kMm, g.path.contact_ratio);
 
-  // Interference ignored as the paper did: physics.md 14.1 table, geometric
+  // Interference ignored as the paper did: docs/models/geometry.md table, geometric
   // reading: double 89.87 mm, triple 7.16 mm along the LOA.
   d.effects.interference_limit = false;
   const MeshGeometry h = build_mesh_geometry(d);
@@ -95,7 +95,7 @@ TEST(MeshGeometry, Seed000AsStated) {
 }
 
 TEST(MeshGeometry, Seed004) {
-  // physics.md 12.2: r = 504, r_b = 473.6, r_a = 598.5 mm, no undercut,
+  // docs/models/reliability.md: r = 504, r_b = 473.6, r_a = 598.5 mm, no undercut,
   // path 80.3 -> 365.9 mm, p_b = 186.0 mm, eps = 1.536. Cutter: standard
   // h_a0* = 1.25 with the usual rho* = 0.38.
   const Drive d = standard_drive(16, 0.063, 20.0, 0.5, 0.38);
@@ -113,7 +113,7 @@ TEST(MeshGeometry, Seed004) {
 }
 
 TEST(MeshGeometry, Seed001SingleContactInterval) {
-  // physics.md 9.4: z = 17, x = 0, 20 deg, h_a* = 1 on a rack: eps = 1.7478,
+  // docs/models/sources.md: z = 17, x = 0, 20 deg, h_a* = 1 on a rack: eps = 1.7478,
   // single-contact interval 5.341 deg. z = 17 is just below z_min = 17.1, so
   // the value is the one with the (tiny) interference ignored.
   Drive d = standard_drive(17, 0.01, 20.0, 0.0, 0.38);
@@ -128,7 +128,7 @@ TEST(MeshGeometry, Seed001SingleContactInterval) {
 }
 
 TEST(MeshGeometry, ContactRatioMatchesClosedForm) {
-  // physics.md 7.2: eps = z (tan a_a - tan a0)/(2 pi) + (h_a2* - x - Delta/m)/(pi sin a0 cos a0),
+  // docs/models/geometry.md: eps = z (tan a_a - tan a0)/(2 pi) + (h_a2* - x - Delta/m)/(pi sin a0 cos a0),
   // and each unit of Delta lowers eps by Delta/(p_b sin a0). rho* = 0.3 keeps
   // the form circle below the rack tip (no interference) on this grid.
   const double m = 0.01;
@@ -158,8 +158,8 @@ TEST(MeshGeometry, ContactRatioMatchesClosedForm) {
 }
 
 TEST(MeshGeometry, Seed000TrendsInterferenceIgnored) {
-  // physics.md 7.2: -0.0852 in eps per 2 mm of clearance for seed 000;
-  // physics.md 14.1: triple contact 7.16 mm at Delta = 0, 14 deg, and none at
+  // docs/models/geometry.md: -0.0852 in eps per 2 mm of clearance for the rack railway paper;
+  // docs/models/geometry.md: triple contact 7.16 mm at Delta = 0, 14 deg, and none at
   // Delta = 2, 4 mm or at 15, 16 deg (geometric eps < 2).
   auto build = [](double alpha, double clearance) {
     Drive d = seed000_drive(alpha, clearance);
@@ -196,7 +196,7 @@ TEST(MeshGeometry, Seed000TrendsInterferenceIgnored) {
 }
 
 TEST(MeshGeometry, ZoneMeasuresAndPairCounts) {
-  // physics.md 7.2: zone lengths (n+1-eps) p_b and (eps-n) p_b; rack travel
+  // docs/models/geometry.md: zone lengths (n+1-eps) p_b and (eps-n) p_b; rack travel
   // /cos a0, rack flank *tan a0, pinion angle /r_b. Pair counts are checked
   // by brute-force counting of {s + j p_b} in [s_start, s_end).
   const Drive d = standard_drive(30, 0.01, 20.0, 0.1, 0.3);
@@ -231,7 +231,7 @@ TEST(MeshGeometry, ZoneMeasuresAndPairCounts) {
 }
 
 TEST(MeshGeometry, ContactHeightAndRadius) {
-  // physics.md 7.1/7.2: the rack tip contact (s_A) sits at h_a2* m above the
+  // docs/models/geometry.md: the rack tip contact (s_A) sits at h_a2* m above the
   // datum; the pitch point at x m + Delta (the datum is x m + Delta below the
   // pitch line); the pinion tip contact at radius r_a; pitch point at radius r.
   Drive d = standard_drive(25, 0.01, 20.0, 0.3, 0.3);
@@ -245,7 +245,7 @@ TEST(MeshGeometry, ContactHeightAndRadius) {
 }
 
 // Clearance that brings a rack-tip limited drive to eps = k exactly:
-// Delta = (eps0 - k) p_b sin a0 (physics.md 7.2).
+// Delta = (eps0 - k) p_b sin a0 (docs/models/geometry.md).
 TEST(MeshGeometry, ExactIntegerContactRatios) {
   for (int k : {1, 2}) {
     Drive d = standard_drive(60, 0.01, 14.0, 0.0, 0.2);
@@ -277,8 +277,8 @@ TEST(MeshGeometry, ExactIntegerContactRatios) {
 
 TEST(MeshGeometry, CutterTipRadiusAboveClearanceLimit) {
   // rho > c* m/(1 - sin a0) raises the form circle above the rack tip point:
-  // s_form - s_A = (rho (1 - sin a0) - c* m - Delta)/sin a0 (from physics.md
-  // 2.3 r_c and 7.1 s_A); the start moves there and a warning is given.
+  // s_form - s_A = (rho (1 - sin a0) - c* m - Delta)/sin a0 (from r_c and s_A of
+  // docs/models/geometry.md); the start moves there and a warning is given.
   const double a = deg(20), m = 0.01;
   Drive d = standard_drive(40, m, 20.0, 0.0, 0.45);
   const MeshGeometry g = build_mesh_geometry(d);

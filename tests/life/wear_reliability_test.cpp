@@ -1,5 +1,5 @@
 // Monte Carlo wear life at R: thread-count independence and agreement of the
-// sampled life at R with the exact single-input quantile (issue 3).
+// sampled life at R with the exact single-input quantile.
 #include "rackopt/life/wear_reliability.hpp"
 
 #include <gtest/gtest.h>
@@ -74,7 +74,7 @@ TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
   }
 }
 
-// The one-input life table (issue 3 speed): every sample's life from the
+// The one-input life table (for speed): every sample's life from the
 // table agrees with the model's own life of that sample to 1e-3 relative
 // (measured ~3e-4: the size of the 240-point model's own jitter in
 // life(eps), docs/accuracy.md), with the same failure criterion, and the
@@ -218,7 +218,7 @@ TEST(WearReliability, ImpossibleSamplesFailAtOnceWithoutStoppingTheRun) {
 namespace rackopt {
 namespace {
 
-// Hard case (issue 3): 10^4 samples complete, every one evaluated, and the
+// Hard case: 10^4 samples complete, every one evaluated, and the
 // survival fractions match the exact quantile map to 3 binomial sd (0.3 %
 // at R = 0.5): a test of both the sampler and the exact path at a sample
 // size where a bias of half a percent would show.

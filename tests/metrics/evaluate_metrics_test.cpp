@@ -143,7 +143,7 @@ TEST(EvaluateMetrics, WearLifeIsTheWearModelsOnShipLift) {
               1e-12 * v.values[0].value);
 }
 
-// One monotone random input (the contact ratio, as in seed 004): the exact
+// One monotone random input (the contact ratio, as in the wear paper): the exact
 // life at R must lie inside the distribution-free order-statistic interval of
 // an independent 300-sample Monte Carlo run, it is the exact quantile that
 // run_wear_reliability reports, and the life falls as the demanded R rises.
@@ -266,7 +266,7 @@ TEST(EvaluateMetrics, WearLifeAtRMonteCarloIsDeterministicAndFallsWithR) {
 TEST(EvaluateMetrics, DesignErrorsBecomeFailedValuesWithTheirCode) {
   const ProblemTree tree = load_problem_tree_file(path("ship_lift"));
   {
-    // Rack datum moved 60 mm away: eps = 1.536 - 0.06/(p_b sin a0) = 1.536 - 0.943 < 1 (physics.md 7.2).
+    // Rack datum moved 60 mm away: eps = 1.536 - 0.06/(p_b sin a0) = 1.536 - 0.943 < 1 (docs/models/geometry.md).
     const std::vector<std::pair<std::string, double>> x{{"mounting.clearance", 0.06}};
     const Drive d = drive_with_values(tree, x);
     const MetricValues v = eval(d, {"contact_ratio", "min_stiffness", "supports_per_metre", "contact_stress"});

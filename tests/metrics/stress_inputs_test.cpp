@@ -3,7 +3,7 @@
 // missing allowable names the problem key to add.
 //
 // Independent numbers: the Hertz pitch-point pressure of the ship lift in
-// closed form (physics.md 7.5), ISO 6336-3's K_Fbeta = K_Hbeta^N_F by hand,
+// closed form (docs/models/wear.md), ISO 6336-3's K_Fbeta = K_Hbeta^N_F by hand,
 // and the linearity of the stresses in the load factors.
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ using test::path;
 // ISO 6336-3 N_F for b/h below 3 (both bundled drives): b/h = 3.
 constexpr double kNfShort = 9.0 / 13.0;
 
-// Ship lift, seed 004 data: sigma_H = Z_eps * p0, p0 the Hertz pressure of a
+// Ship lift, the wear paper's data: sigma_H = Z_eps * p0, p0 the Hertz pressure of a
 // cylinder of radius r sin a0 on a flat under F_n / b, all by hand.
 TEST(StressInputs, ShipLiftSafetyFromTheProblemsAllowablesMatchesAHandComputation) {
   const Drive d = load_problem(path("ship_lift"));
@@ -42,9 +42,9 @@ TEST(StressInputs, ShipLiftSafetyFromTheProblemsAllowablesMatchesAHandComputatio
   const double force = 453e3 / (r * std::cos(a0));
   const double inv_estar = (1 - 0.271 * 0.271) / 209e9 + (1 - 0.3 * 0.3) / 202e9;
   const double p0 = std::sqrt(force / b / (kPi * inv_estar * r * std::sin(a0)));
-  EXPECT_NEAR(p0, 1283e6, 1e6);  // physics.md 7.5
+  EXPECT_NEAR(p0, 1283e6, 1e6);  // docs/models/wear.md
   const double eps = v.at("contact_ratio").value;
-  EXPECT_NEAR(eps, 1.536, 0.001);  // physics.md 12.2
+  EXPECT_NEAR(eps, 1.536, 0.001);  // docs/models/reliability.md
   const double sigma_h = p0 * std::sqrt((4 - eps) / 3);
   EXPECT_NEAR(v.at("contact_stress").value, sigma_h, 1e-9 * sigma_h);
   // materials.*.allowable_contact: 1057 MPa for both members.

@@ -9,7 +9,7 @@
 //  * the Hertz line contact p0 = sqrt(F' E*/(pi R)) (Johnson 1985) of a
 //    cylinder of radius R = r sin a0 on a flat;
 //  * the moment of the rack tooth load about its root section written as in
-//    physics.md 5.1, M(y) = F [cos a0 (y_c - y) - sin a0 w_c];
+//    docs/models/tooth.md, M(y) = F [cos a0 (y_c - y) - sin a0 w_c];
 //  * scaling laws: geometric similarity (all lengths x k at fixed force gives
 //    sigma_F / k and sigma_H / sqrt(k)), sigma_F linear and sigma_H square-root
 //    in the load.
@@ -155,15 +155,15 @@ TEST(ToothStress, ContactStressIsHertzCylinderOnFlatAtThePitchPoint) {
     EXPECT_NEAR(s.contact_stress / s.contact_ratio_factor_contact / p0, 1.0, 1e-12) << name;
     EXPECT_NEAR(s.contact_ratio_factor_contact, std::sqrt((4 - g.path.contact_ratio) / 3), 1e-15);
   }
-  // Ship lift by hand: E* = 111.9 GPa (physics.md 4.1), R = 504 mm sin 20 deg = 172.38 mm,
+  // Ship lift by hand: E* = 111.9 GPa (docs/models/tooth.md), R = 504 mm sin 20 deg = 172.38 mm,
   // F' = 956.5 kN / 0.12 m = 7.971 MN/m: p0 = sqrt(7.971e6 * 111.9e9 / (pi * 0.17238)) = 1283 MPa,
-  // the pitch-point p0 of physics.md 7.5.
+  // the pitch-point p0 of docs/models/wear.md.
   const Drive d = problem("ship_lift");
   const ToothStress s = tooth_stress(d, build_mesh_geometry(d));
   EXPECT_NEAR(s.contact_stress / s.contact_ratio_factor_contact, 1283e6, 2e6);
 }
 
-// The rack root: the bending moment of physics.md 5.1 about the critical
+// The rack root: the bending moment of docs/models/tooth.md about the critical
 // chord, 6 M / (b s^2), times Y_S and Y_eps. Ship lift: the path starts at the
 // rack tip (no undercut), so the load sits at the whole tooth height
 // y_c = (h_a2* + h_f2*) m above the root line.

@@ -2,7 +2,7 @@
 // file:line:column and key path, overrides, variants, derived values.
 //
 // Expected numbers come from the sources the problem files cite (seed tables,
-// physics.md 12.2 / 14.1 / 14.3) or from hand arithmetic written next to the
+// docs/models/reliability.md, docs/models/geometry.md, docs/models/mesh.md) or from hand arithmetic written next to the
 // assertion, never from running the loader.
 #include "problem_test_support.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -28,7 +28,7 @@ using test::problem_path;
 
 TEST(BundledProblems, RackRailwayMatchesSeed000Table1) {
   const Drive d = load_problem(problem_path("rack_railway.yaml"));
-  // Seed 000 Table 1.
+  // The rack railway paper's Table 1.
   EXPECT_EQ(d.pinion.teeth, 22);
   EXPECT_DOUBLE_EQ(d.pinion.module, 31.831e-3);
   EXPECT_DOUBLE_EQ(d.pinion.pressure_angle, 14 * kDeg);
@@ -42,7 +42,7 @@ TEST(BundledProblems, RackRailwayMatchesSeed000Table1) {
   EXPECT_DOUBLE_EQ(d.rack.span, 2.4);
   EXPECT_EQ(d.rack.supports, Supports::kPinPin);
   EXPECT_DOUBLE_EQ(d.mounting.clearance, 0.0);
-  // physics.md 14.3: EI = 4.517e5 N m^2 from the series fit; the 60 x 75.5 mm
+  // docs/models/mesh.md: EI = 4.517e5 N m^2 from the series fit; the 60 x 75.5 mm
   // body reproduces it to 0.5 %.
   EXPECT_NEAR(d.rack.material.youngs_modulus * d.rack.section.second_moment, 4.517e5, 0.005 * 4.517e5);
   // Full physics: every effect on, coupled rack span.
@@ -72,7 +72,7 @@ TEST(BundledProblems, ShipLiftForceFromTorqueMatchesPhysicsMd) {
   EXPECT_DOUBLE_EQ(d.rack.material.youngs_modulus, 202e9);
   EXPECT_DOUBLE_EQ(d.rack.material.poisson_ratio, 0.3);
   EXPECT_DOUBLE_EQ(d.load.torque, 453e3);
-  // physics.md 12.2: F_n = 956.5 kN (printed to 4 digits).
+  // docs/models/reliability.md: F_n = 956.5 kN (printed to 4 digits).
   EXPECT_NEAR(d.load.force, 956.5e3, 0.05e3);
   // Default bore: 0.5 r_f = 0.5 * 63 * (8 - 1.25 + 0.5) mm = 228.375 mm.
   EXPECT_NEAR(d.pinion.bore_radius, 0.228375, 1e-9);
@@ -86,7 +86,7 @@ TEST(BundledProblems, LargeModuleVariantsAreTheSeed001SpallLevels) {
   EXPECT_EQ(normal.pinion.teeth, 17);
   EXPECT_DOUBLE_EQ(normal.pinion.material.youngs_modulus, 211e9);
   EXPECT_DOUBLE_EQ(normal.pinion.material.poisson_ratio, 0.29);
-  // Seed 001 table: depth 2 mm, width 5 mm, length 5 / 10 / 15 mm.
+  // The spalling paper's table: depth 2 mm, width 5 mm, length 5 / 10 / 15 mm.
   const std::vector<std::pair<std::string, double>> levels = {{"mild", 5e-3}, {"moderate", 10e-3}, {"severe", 15e-3}};
   for (const auto& [name, length] : levels) {
     const Drive d = load_problem(path, {"variant=" + name});
@@ -267,7 +267,7 @@ TEST(Errors, UnknownKeySuggestsTheClosestKnownKey) {
 }
 
 TEST(Errors, DuplicateKeysAreDetected) {
-  // yaml-cpp 0.7 keeps both silently (dependencies.md 4.4).
+  // yaml-cpp 0.7 keeps both silently (docs/dependencies.md, "yaml-cpp 0.7").
   expect_error(std::string(kMinimal) + "  force: 20 kN\n", {10, 3, "load.force", "duplicate key 'force' (first given at t.yaml:9:3)"});
 }
 

@@ -1,8 +1,8 @@
-// Problem loader: the wear, duty and reliability keys (issue 3).
+// Problem loader: the wear, duty and reliability keys.
 //
 // Expected SI values are hand arithmetic written next to each assertion from
-// the unit definitions (1 HB = 9.80665e6 Pa, physics.md 10.1; 1 yr = 365.25 d
-// = 31 557 600 s; 1 mm = 1e-3 m) and from physics.md 11.3 / 12.2 for the
+// the unit definitions (1 HB = 9.80665e6 Pa, docs/models/wear.md; 1 yr = 365.25 d
+// = 31 557 600 s; 1 mm = 1e-3 m) and from docs/models/wear.md, docs/models/reliability.md for the
 // bundled ship lift, never from running the loader. Error positions
 // (line:column) are counted by hand in the YAML text of each test.
 #include "problem_test_support.hpp"
@@ -57,13 +57,13 @@ double polynomial(const std::vector<double>& c, double h) {
 TEST(WearKeys, ShipLiftSeed004Data) {
   const Drive d = load_problem(problem_path("ship_lift.yaml"));
   const WearSpec& w = d.wear;
-  EXPECT_DOUBLE_EQ(w.coefficient, 0.3e-5);      // seed 004's 0.3 x 10^?, exponent calibrated
-  EXPECT_DOUBLE_EQ(w.max_depth, 1.5e-3);        // seed 004 h_max = 1.5 mm
+  EXPECT_DOUBLE_EQ(w.coefficient, 0.3e-5);      // the wear paper's 0.3 x 10^?, exponent calibrated
+  EXPECT_DOUBLE_EQ(w.max_depth, 1.5e-3);        // the wear paper's h_max = 1.5 mm
   EXPECT_DOUBLE_EQ(w.min_contact_ratio, 1.2);
   EXPECT_FALSE(w.update_profile);
   EXPECT_EQ(w.profile_points, 240);
   EXPECT_FALSE(w.stop_at_case_depth);
-  // Seed 004 polynomial H = 596 + 2 h - 1.6786 h^2 - 0.25 h^3 (HB, h in mm):
+  // The wear paper's polynomial H = 596 + 2 h - 1.6786 h^2 - 0.25 h^3 (HB, h in mm):
   // c_i [Pa/m^i] = c_i * 9.80665e6 / (1e-3)^i.
   for (const HardnessProfile* h : {&w.pinion_hardness, &w.rack_hardness}) {
     ASSERT_EQ(h->kind, HardnessProfile::Kind::kPolynomial);
@@ -75,19 +75,19 @@ TEST(WearKeys, ShipLiftSeed004Data) {
     EXPECT_DOUBLE_EQ(h->surface, 596 * kHB);  // H0 = 596 HB
     EXPECT_DOUBLE_EQ(h->valid_depth, 6.5e-3);
     EXPECT_DOUBLE_EQ(h->core, 300 * kHB);
-    // physics.md 11.3, independent of the conversion above: the SI polynomial
+    // docs/models/wear.md, independent of the conversion above: the SI polynomial
     // gives 0.8 H0 = 476.8 HB at h = 6.35 mm and its maximum 596.55 HB near 0.53 mm.
     EXPECT_NEAR(polynomial(h->coefficients, 6.35e-3) / kHB, 476.8, 0.5);
     EXPECT_NEAR(polynomial(h->coefficients, 0.53e-3) / kHB, 596.55, 0.01);
   }
-  EXPECT_NEAR(d.duty.rack_meshes_per_year, 1.0e4, 1e-9);  // seed 004 n_L = 1.0 x 10^4 a year (exponent calibrated)
+  EXPECT_NEAR(d.duty.rack_meshes_per_year, 1.0e4, 1e-9);  // the wear paper's n_L = 1.0 x 10^4 a year (exponent calibrated)
   EXPECT_DOUBLE_EQ(d.duty.pinion_meshes_per_year, d.duty.rack_meshes_per_year);  // default = the rack's
   const ReliabilitySpec& r = d.reliability;
-  EXPECT_EQ(r.samples, 1000);  // seed 004 N = 1000
+  EXPECT_EQ(r.samples, 1000);  // the wear paper's N = 1000
   EXPECT_EQ(r.seed, 1u);
   EXPECT_FALSE(r.sobol);
   EXPECT_EQ(r.reliabilities, (std::vector<double>{0.9, 0.95, 0.99}));
-  // The seed 004 table times (physics.md 12.2), in seconds.
+  // The wear paper's table times (docs/models/reliability.md), in seconds.
   const double years[] = {40, 55, 60, 65, 75};
   ASSERT_EQ(r.times.size(), 5u);
   for (std::size_t i = 0; i < 5; ++i) EXPECT_DOUBLE_EQ(r.times[i], years[i] * 31557600.0);

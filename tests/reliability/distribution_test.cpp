@@ -1,6 +1,6 @@
 // Distributions (rackopt/reliability/distribution.hpp) against
 //  * closed forms written here independently (normal via std::erfc, Weibull
-//    a(-ln R)^(1/b) as dependencies.md 4.5 states, uniform, lognormal via the
+//    a(-ln R)^(1/b) as docs/dependencies.md, "GSL 2.7" states, uniform, lognormal via the
 //    normal of ln x);
 //  * GSL's own gsl_cdf_gamma_P (a different code path from the class, which
 //    goes through the survival/quantile routines);
@@ -62,7 +62,7 @@ TEST(Distribution, NormalQuantileMatchesTable) {
 }
 
 TEST(Distribution, WeibullLifeAtReliabilityClosedForm) {
-  // dependencies.md 4.5: life at reliability R = a (-ln R)^(1/b).
+  // docs/dependencies.md, "GSL 2.7": life at reliability R = a (-ln R)^(1/b).
   const double a = 60.0, b = 12.0;
   const auto d = Distribution::weibull(a, b);
   for (double r : {0.999, 0.9, 0.5, 0.1}) {

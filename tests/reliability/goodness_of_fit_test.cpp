@@ -4,7 +4,7 @@
 //    a normal with mean and variance estimated is 0.886/sqrt(N) for N > 30
 //    (the same holds for a lognormal: it is a normal in ln x);
 //  * the classical Kolmogorov asymptotic value sqrt(-ln(alpha/2)/2)/sqrt(N),
-//    1.3581/sqrt(N) at 5% (physics.md 12.1; Smirnov 1948 table);
+//    1.3581/sqrt(N) at 5% (docs/models/reliability.md; Smirnov 1948 table);
 //  * the definition of a level-alpha test: on samples from the fitted family,
 //    the rejection rate is alpha (coarse check with a binomial tolerance);
 //  * a hand-computable D_N for a tiny sample.
@@ -33,7 +33,7 @@ TEST(KsStatistic, TinySampleByHand) {
 
 TEST(KsCriticalValue, ClassicalAsymptotic) {
   EXPECT_NEAR(ks_known_parameter_critical_value(1000, 0.05), 1.3581 / std::sqrt(1000.0), 1e-5);
-  EXPECT_NEAR(ks_known_parameter_critical_value(1000, 0.05), 0.043, 5e-4);  // physics.md 12.1
+  EXPECT_NEAR(ks_known_parameter_critical_value(1000, 0.05), 0.043, 5e-4);  // docs/models/reliability.md
   EXPECT_NEAR(ks_known_parameter_critical_value(100, 0.01), 1.6276 / 10, 1e-4);
   EXPECT_THROW(ks_known_parameter_critical_value(10, 0.0), InputError);
 }

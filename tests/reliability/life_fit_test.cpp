@@ -12,7 +12,7 @@
 //  * the likelihood equations themselves, evaluated here with GSL's digamma
 //    (gamma: ln k - psi(k) = ln mean - mean ln x) or directly (Weibull profile);
 //  * the maximum property: ln L at the fit exceeds ln L at nearby parameters;
-//  * physics.md 12.2, the seed 004 reliability table.
+//  * docs/models/reliability.md, the wear paper's reliability table.
 #include "rackopt/reliability/life_fit.hpp"
 
 #include <gsl/gsl_sf_psi.h>
@@ -173,20 +173,20 @@ TEST(LifeFits, HardCases) {
     EXPECT_TRUE(std::isfinite(fit_life_distribution(f, x).aic));
 }
 
-// physics.md 12.2: seed 004's reliability table (years).
+// docs/models/reliability.md: the wear paper's reliability table (years).
 const std::vector<double> kSeedYears{75, 65, 60, 55};
 const std::vector<double> kSeedR{0.0135, 0.4054, 0.7949, 0.9743};
 
 TEST(ReliabilityPointFit, Seed004GammaTable) {
   const auto fit = fit_to_reliability_points(Family::kGamma, kSeedYears, kSeedR);
   const auto& d = fit.distribution;
-  std::printf("seed 004 gamma: shape %.4f scale %.6f y, mean %.4f y, sd %.4f y, cv %.5f, "
+  std::printf("the wear paper's gamma: shape %.4f scale %.6f y, mean %.4f y, sd %.4f y, cv %.5f, "
               "max |res| %.5f, R(40) = 1 - %.3g\n",
               d.first(), d.second(), d.mean(), d.standard_deviation(),
               d.standard_deviation() / d.mean(), fit.max_abs_residual, d.cdf(40.0));
   for (std::size_t i = 0; i < kSeedYears.size(); ++i)
     EXPECT_NEAR(d.survival(kSeedYears[i]), kSeedR[i], 0.02) << kSeedYears[i] << " y";
-  // physics.md: "the table values come from the fitted gamma distribution".
+  // The table values come from a fitted gamma distribution (docs/models/reliability.md).
   // A 4-decimal table of a gamma reproduces to its rounding (5e-5), with margin.
   EXPECT_LT(fit.max_abs_residual, 2e-4);
   // The 40-year row (R = 0.9992, failure probability 8e-4) is inconsistent:
@@ -204,11 +204,11 @@ TEST(ReliabilityPointFit, Seed004GammaTable) {
 }
 
 TEST(ReliabilityPointFit, Seed004WeibullIsTheWorst) {
-  // physics.md 12.2: "The Weibull fit is the worst: its residuals are up to 0.019."
+  // docs/models/reliability.md: "The Weibull fit is the worst: its residuals are up to 0.019."
   const auto g = fit_to_reliability_points(Family::kGamma, kSeedYears, kSeedR);
   const auto w = fit_to_reliability_points(Family::kWeibull, kSeedYears, kSeedR);
   const auto l = fit_to_reliability_points(Family::kLognormal, kSeedYears, kSeedR);
-  std::printf("seed 004 max |residual|: gamma %.4f, lognormal %.4f, weibull %.4f\n",
+  std::printf("the wear paper's max |residual|: gamma %.4f, lognormal %.4f, weibull %.4f\n",
               g.max_abs_residual, l.max_abs_residual, w.max_abs_residual);
   EXPECT_GT(w.max_abs_residual, g.max_abs_residual);
   EXPECT_GT(w.max_abs_residual, l.max_abs_residual);

@@ -4,8 +4,8 @@
 //  * the order-statistic confidence interval's guarantee (David & Nagaraja,
 //    Order Statistics, 3rd ed., 7.1): it covers the true quantile with
 //    probability >= c for any continuous distribution; checked by repetition
-//    against the exact quantile a(-ln R)^(1/b) of a Weibull (dependencies.md 4.5);
-//  * physics.md 12.2: the seed 004 gamma life model (shape 179.235,
+//    against the exact quantile a(-ln R)^(1/b) of a Weibull (docs/dependencies.md, "GSL 2.7");
+//  * docs/models/reliability.md: the wear paper's gamma life model (shape 179.235,
 //    scale 0.356903 y, fitted in life_fit_test) regenerates the table it came
 //    from when sampled and refitted.
 #include "rackopt/reliability/reliability.hpp"
@@ -97,7 +97,7 @@ ReliabilityRequest seed004_request() {
 }
 
 TEST(ReliabilitySummary, Seed004GammaLivesReproduceTheTable) {
-  // 1000 lives from the gamma fitted to physics.md 12.2's table: the summary
+  // 1000 lives from the gamma fitted to docs/models/reliability.md's table: the summary
   // must accept gamma and give back the table within sampling error
   // (sd of an empirical R: sqrt(R(1-R)/1000) <= 0.016).
   const auto x = gamma_lives_seconds(1000, 31);

@@ -2,9 +2,9 @@
 // Expected values come from
 //  * properties that must hold exactly (bitwise reproducibility for any thread
 //    count, points strictly inside (0,1), dimension 41 rejected because
-//    gsl_qrng_sobol->max_dimension is 40, dependencies.md 4.5);
+//    gsl_qrng_sobol->max_dimension is 40, docs/dependencies.md, "GSL 2.7");
 //  * the known first Sobol points of GSL (0.5; 0.75, 0.25; ... for dimension 1-2,
-//    dependencies.md 4.5 and Bratley & Fox 1988 direction numbers);
+//    docs/dependencies.md, "GSL 2.7" and Bratley & Fox 1988 direction numbers);
 //  * uniform-distribution moments: mean 1/2, variance 1/12, zero correlation
 //    between coordinates, within a few standard errors;
 //  * the Sobol equidistribution property: the first 2^m points of the

@@ -20,7 +20,7 @@ namespace hb = rackopt::hinged_beam;
 
 namespace {
 
-constexpr double kL = 2.4;  // span [m] used throughout (physics.md 6.2)
+constexpr double kL = 2.4;  // span [m] used throughout (docs/models/rack_span.md)
 
 // ---- unit-load method ------------------------------------------------------
 // A unit load of one kind at xi: force (upward) or couple (counterclockwise).
@@ -139,8 +139,7 @@ TEST(BeamInfluence, PointCoupleDeflectionAndSupportRotationsMatchGere) {
 // end -M L/(6 EI), v = M x (L - x)(2L - x)/(6 L EI), midpoint M L^2/(16 EI).
 // Couple at the centre: by antisymmetry each half is a simply supported beam
 // of length L/2 with the end couple M/2 at the centre, so the end-couple case
-// gives rotation under the couple (M/2)(L/2)/(3EI) = M L/(12 EI) (physics.md
-// 16), end rotations -M L/(24 EI), v(L/2) = 0 and quarter points
+// gives rotation under the couple (M/2)(L/2)/(3EI) = M L/(12 EI), end rotations -M L/(24 EI), v(L/2) = 0 and quarter points
 // -/+ (M/2)(L/2)^2/(16 EI) = -/+ M L^2/(128 EI).
 TEST(BeamInfluence, CoupleSpecialCases) {
   EXPECT_NEAR(hb::bending_rotation_per_couple(kL / 2, kL / 2, kL), kL / 12.0, 1e-14);
@@ -159,7 +158,7 @@ TEST(BeamInfluence, CoupleSpecialCases) {
 }
 
 // Rotation under a couple at a: M (3a^2 - 3 a L + L^2)/(3 L EI) (Roark 3e,
-// physics.md 6.2 writes it as (a^3 + b^3)/(3 L^2)).
+// docs/models/rack_span.md writes it as (a^3 + b^3)/(3 L^2)).
 TEST(BeamInfluence, RotationUnderCouple) {
   for (double a : {0.0, 0.15, 0.6, 1.2, 1.8, 2.25, 2.4}) {
     const double b = kL - a;

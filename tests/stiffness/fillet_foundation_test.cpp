@@ -1,4 +1,4 @@
-// Fillet-foundation compliance, Sainsot, Velex & Duverger (2004), physics.md 3.
+// Fillet-foundation compliance, Sainsot, Velex & Duverger (2004), docs/models/tooth.md.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +15,7 @@ using test::deg;
 using test::inv;
 using test::kPi;
 
-// Hand-filled geometry (physics.md 1 and 3.1); theta_f with the TOOL addendum
+// Hand-filled geometry (docs/models/geometry.md, docs/models/tooth.md); theta_f with the TOOL addendum
 // h_a0* = dedendum_coef and cutter tip radius rho* = tip_radius_coef.
 MeshGeometry fillet_geometry(const PinionSpec& p) {
   MeshGeometry g;
@@ -34,7 +34,7 @@ MeshGeometry fillet_geometry(const PinionSpec& p) {
   return g;
 }
 
-// Seed 000 pinion (physics.md 14.1): m = 31.831 mm, z = 22, 14 deg, h_a* = 0.9,
+// The rack railway paper's pinion (docs/models/geometry.md): m = 31.831 mm, z = 22, 14 deg, h_a* = 0.9,
 // c* = 0.166 -> h_a0* = 1.066, rho* = c*/(1 - sin a0) = 0.21897, face 60 mm,
 // E = 210 GPa. Bore radius 150 mm is our choice (not in the seed): h_f = 2.108.
 PinionSpec seed000() {
@@ -53,7 +53,7 @@ PinionSpec seed000() {
 }
 
 TEST(SainsotCoefficients, MatchHandEvaluatedTable) {
-  // X = A/t^2 + B h^2 + C h/t + D/t + E h + F with the physics.md 3.2 rows,
+  // X = A/t^2 + B h^2 + C h/t + D/t + E h + F with the docs/models/tooth.md rows,
   // evaluated by hand (python, term by term), e.g. L*(2, 0.1) =
   // -0.005574 - 0.0079944 - 0.004603 + 0.047702 + 0.0542 + 6.8045 = 6.8882306.
   struct Point { double h, t, L, M, P, Q; };
@@ -88,7 +88,7 @@ TEST(FilletFoundation, UfIsWhereTheLineOfActionCrossesTheCentreLine) {
 }
 
 TEST(FilletFoundation, FormulaWithHandCoefficientsAndFaceWidthScaling) {
-  // theta_f = 0.1111149 rad (3.1 formula, seed 000), h_f = 316.2092/150.
+  // theta_f = 0.1111149 rad (3.1 formula, the rack railway paper), h_f = 316.2092/150.
   const PinionSpec p = seed000();
   const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
@@ -103,13 +103,13 @@ TEST(FilletFoundation, FormulaWithHandCoefficientsAndFaceWidthScaling) {
   const double expected = std::pow(std::cos(a1), 2) / (210e9 * 0.06) *
                           (c.L * u * u + c.M * u + c.P * (1 + c.Q * std::pow(std::tan(a1), 2)));
   EXPECT_NEAR(f.at(s, 0.06), expected, 1e-12 * expected);
-  // Effective face width (spall under the contact, physics.md 9.3): 1/b.
+  // Effective face width (spall under the contact, docs/models/tooth.md): 1/b.
   EXPECT_NEAR(f.at(s, 0.03), 2 * f.at(s, 0.06), 1e-12 * expected);
   EXPECT_THROW(f.at(s, 0.0), InputError);
 }
 
 TEST(FilletFoundation, Seed000OrderOfMagnitude) {
-  // physics.md 4.1: "seed 000: ... approx 3 GN/m foundation". With our chosen
+  // docs/models/tooth.md: "the rack railway paper: ... approx 3 GN/m foundation". With our chosen
   // bore (150 mm) the pitch-point value is 2.9 GN/m; accept 2-4.5 GN/m over the
   // middle of the path (the value depends on the bore and the contact).
   const PinionSpec p = seed000();
@@ -143,7 +143,7 @@ TEST(FilletFoundation, PositiveAlongThePathAndOutsideRangeFlag) {
       }
     }
   }
-  // theta_f for z = 17 is about 0.15 rad: outside the fitted range (physics.md 3.2).
+  // theta_f for z = 17 is about 0.15 rad: outside the fitted range (docs/models/tooth.md).
   PinionSpec p = seed000();
   p.teeth = 17;
   const MeshGeometry g = fillet_geometry(p);

@@ -1,4 +1,4 @@
-// Hertzian contact compliance (physics.md 4).
+// Hertzian contact compliance (docs/models/tooth.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,8 +19,8 @@ Material steel(double E, double nu) {
 }
 
 TEST(Hertz, LinearStiffnessSeed000) {
-  // physics.md 4.1: k_h = pi E b/(4(1 - nu^2)) = 10.87 GN/m for b = 60 mm,
-  // E = 210 GPa, nu = 0.3 (seed 000).
+  // docs/models/tooth.md: k_h = pi E b/(4(1 - nu^2)) = 10.87 GN/m for b = 60 mm,
+  // E = 210 GPa, nu = 0.3 (the rack railway paper).
   const Material s = steel(210e9, 0.3);
   const double k = 1.0 / hertz_linear_compliance(effective_modulus(s, s), 0.060);
   EXPECT_NEAR(k, 10.87e9, 0.005e9);
@@ -28,14 +28,14 @@ TEST(Hertz, LinearStiffnessSeed000) {
 }
 
 TEST(Hertz, EffectiveModulusSeed004) {
-  // physics.md 4.1: E1 = 209, E2 = 202 GPa, nu = 0.271 / 0.3 -> E* = 111.9 GPa.
+  // docs/models/tooth.md: E1 = 209, E2 = 202 GPa, nu = 0.271 / 0.3 -> E* = 111.9 GPa.
   EXPECT_NEAR(effective_modulus(steel(209e9, 0.271), steel(202e9, 0.3)), 111.9e9, 0.05e9);
   EXPECT_THROW(effective_modulus(steel(0, 0.3), steel(202e9, 0.3)), InputError);
   EXPECT_THROW(hertz_linear_compliance(111.9e9, 0.0), InputError);
 }
 
 TEST(Hertz, WeberBanaschekMatchesTheSameMaterialFormula) {
-  // physics.md 4.2 (same material): delta = 2F(1-nu^2)/(pi E b)[ln(2h1/a) +
+  // docs/models/tooth.md (same material): delta = 2F(1-nu^2)/(pi E b)[ln(2h1/a) +
   // ln(2h2/a) - nu/(1-nu)], a = sqrt(4 F R'/(pi b E*)), E* = E/(2(1-nu^2)).
   const double E = 210e9, nu = 0.3, b = 0.06, F = 2e5, R = 0.085, h1 = 0.025, h2 = 0.03;
   const double e_star = E / (2 * (1 - nu * nu));
@@ -85,7 +85,7 @@ TEST(Hertz, WeberBanaschekProperties) {
   EXPECT_TRUE(std::isfinite(zero));
   EXPECT_EQ(tiny, zero);
   EXPECT_EQ(zero, hertz_weber_banaschek_compliance(s, s, b, 1.0 * b, 0.1, 0.02, 0.02));
-  // Same order as the linear law at a working load (physics.md 4: Hertz share ~10%).
+  // Same order as the linear law at a working load (docs/models/tooth.md: Hertz share ~10%).
   const double lin = hertz_linear_compliance(effective_modulus(s, s), b);
   EXPECT_GT(c / lin, 0.3);
   EXPECT_LT(c / lin, 10.0);

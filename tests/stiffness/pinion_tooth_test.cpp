@@ -1,4 +1,4 @@
-// Pinion tooth compliance (physics.md 2.2, 2.4, 9.1-9.2).
+// Pinion tooth compliance (docs/models/tooth.md).
 //
 // Reference values are computed here independently of the implementation:
 // the tooth is rebuilt in Cartesian coordinates from the textbook involute
@@ -30,7 +30,7 @@ using test::inv;
 using test::kPi;
 using test::qags;
 
-// Hand-filled geometry from the physics.md 1 / 3.1 / 7.1 formulas (the
+// Hand-filled geometry from the docs/models/geometry.md, docs/models/tooth.md formulas (the
 // geometry module is not used so that these tests stand alone).
 MeshGeometry make_geometry(const PinionSpec& p) {
   MeshGeometry g;
@@ -115,7 +115,7 @@ void expect_close(const ToothCompliance& got, const ToothCompliance& ref, double
 }
 
 TEST(PinionTooth, AlphaIntegralsMatchCartesianRootBelowBaseCircle) {
-  // Seed 000 pinion (physics.md 14.1): m = 31.831 mm, z = 22, 14 deg,
+  // The rack railway paper's pinion (docs/models/geometry.md): m = 31.831 mm, z = 22, 14 deg,
   // h_a* = 0.9, h_a0* = 1.066 -> r_f = 316.21 < r_b = 339.74 mm.
   const PinionSpec p = spec(22, 0.031831, 14, 0.9, 1.066, 0.0, 0.06);
   const MeshGeometry g = make_geometry(p);
@@ -168,7 +168,7 @@ TEST(PinionTooth, RootSegmentClosedFormMatchesNumericalIntegration) {
 TEST(PinionTooth, ComplianceGrowsTowardsTheTip) {
   // Monotone from the point where the load angle alpha_1 = s/r_b - alpha_2
   // turns positive. Below it (only reachable near the base circle with
-  // interference ignored, e.g. seed 000 for s < 25 mm) the tilted load's
+  // interference ignored, e.g. the rack railway paper's pinion for s < 25 mm) the tilted load's
   // axial part adds to the moment and the compliance falls slightly as the
   // contact rises; the Cartesian reference above reproduces that too.
   for (const PinionSpec& p : {spec(22, 0.031831, 14, 0.9, 1.066, 0.0, 0.06),
@@ -224,9 +224,9 @@ TEST(PinionTooth, SwitchesAndClamping) {
   EXPECT_NO_THROW(tooth.at(g.path.s_end));
 }
 
-// ---- spalls (physics.md 9) -------------------------------------------------
+// ---- spalls (docs/models/tooth.md) -------------------------------------------------
 
-// Seed 001 pinion (physics.md 9.4: z = 17, x = 0, 20 deg, h_a* = 1); module 20 mm
+// The spalling paper's pinion (docs/models/sources.md: z = 17, x = 0, 20 deg, h_a* = 1); module 20 mm
 // and face 100 mm chosen here so that the 2 mm deep seed spall fits the tooth:
 // r = 170, r_b = 159.75, r_f = 145, r_a = 190 mm.
 PinionSpec seed001() { return spec(17, 0.020, 20, 1.0, 1.25, 0.0, 0.100); }
@@ -244,7 +244,7 @@ TEST(PinionToothSpall, OnlyTheBandBetweenContactAndRootCounts) {
   const SpallBand below{0.165, 0.170, 0.005, 0.002};
   // Total and shear rise. (Bending alone may move either way by a hair: the
   // centroid shift also lengthens the counter-moment arm h - e_s of the
-  // axial part, physics.md 9.1.)
+  // axial part, docs/models/tooth.md.)
   EXPECT_GT(tooth.at(s, &below).total(), clean.total() * (1 + 1e-6));
   EXPECT_GT(tooth.at(s, &below).shear, clean.shear);
   // A band straddling the contact acts like its part below the contact.
@@ -256,7 +256,7 @@ TEST(PinionToothSpall, OnlyTheBandBetweenContactAndRootCounts) {
 }
 
 TEST(PinionToothSpall, Seed001LengthsIncreaseComplianceMonotonically) {
-  // Seed 001 spall: depth 2 mm, width 5 mm, lengths 5/10/15 mm (physics.md 9.4),
+  // The spalling paper's spall: depth 2 mm, width 5 mm, lengths 5/10/15 mm (docs/models/sources.md),
   // lower edge at r = 162 mm, contact at the tip.
   const PinionSpec p = seed001();
   const MeshGeometry g = make_geometry(p);
@@ -275,7 +275,7 @@ TEST(PinionToothSpall, Seed001LengthsIncreaseComplianceMonotonically) {
 
 TEST(PinionToothSpall, PittedBandMatchesCartesianWithReducedSection) {
   // Independent check of the band integral: the same Cartesian centre-line
-  // integration with the reduced section written out here (physics.md 9.1):
+  // integration with the reduced section written out here (docs/models/tooth.md):
   // A = 2hb - hs ws, e = -ws hs (h - hs/2)/A, I = (2/3)h^3 b - ws[h^3 - (h-hs)^3]/3 - A e^2,
   // lever (yc - y) cos a1 - (hc - e) sin a1.
   const PinionSpec p = seed001();

@@ -1,7 +1,7 @@
-// Rack body on two hinges (rack_span.hpp, physics.md 6).
+// Rack body on two hinges (rack_span.hpp, docs/models/rack_span.md).
 //
 // Expected numbers come from:
-//  * physics.md 6.2: the single-load closed form (plus the Timoshenko couple
+//  * docs/models/rack_span.md: the single-load closed form (plus the Timoshenko couple
 //    term c^2 e^2/(l kGA) derived in docs/models/rack_span.md) and the k_body
 //    table (50.7 / 24.0 / 24.5 / 90.0 / 329 MN/m);
 //  * an independent Timoshenko beam finite-element model written here
@@ -43,7 +43,7 @@ RackSpec rectangular_rack(double span, double width, double height, Supports sup
   return rack;
 }
 
-// The seed 000 / physics.md 6.2 body: 60 x 75.5 mm, l = 2.4 m.
+// The rack railway paper's / docs/models/rack_span.md body: 60 x 75.5 mm, l = 2.4 m.
 RackSpec seed_rack(Supports supports = Supports::kPinPin) {
   return rectangular_rack(2.4, 0.060, 0.0755, supports);
 }
@@ -212,7 +212,7 @@ TEST(RackSpanFe, ShortDeepBodyNeedsTheTimoshenkoCoupleTerm) {
                    kNodes, kHeights},
                   1e-6);
 
-  // Dropping the term (physics.md 6.2 as printed) misses the FE by far more
+  // Dropping the term (docs/models/rack_span.md as printed) misses the FE by far more
   // than the tolerance near the right hinge.
   TimoshenkoFe fe(rack, kAlpha14, fx, 480);
   RackSpanCompliance body(rack, kAlpha14, fx);
@@ -223,17 +223,17 @@ TEST(RackSpanFe, ShortDeepBodyNeedsTheTimoshenkoCoupleTerm) {
   EXPECT_NEAR(p.total(), fe_value, 1e-6 * fe_value);
 }
 
-// ---- physics.md 6.2 closed forms ------------------------------------------
+// ---- docs/models/rack_span.md closed forms ------------------------------------------
 
 namespace {
-// physics.md 6.2 single-load compliance, plus the Timoshenko couple term.
+// docs/models/rack_span.md single-load compliance, plus the Timoshenko couple term.
 double physics_single_load(double a, double e, double l, double EI, double EA, double GA, bool pin_pin,
                            double alpha) {
   const double s = std::sin(alpha), c = std::cos(alpha), b = l - a;
   const double f_ax = pin_pin ? a * b / (EA * l) : a / EA;
   return s * s * a * a * b * b / (3 * EI * l) + c * c * e * e * (a * a * a + b * b * b) / (3 * EI * l * l) +
          2 * s * c * e * a * b * (b - a) / (3 * EI * l) + c * c * f_ax + 1.2 * s * s * a * b / (GA * l) +
-         1.2 * c * c * e * e / (GA * l);  // last term: not in physics.md (Timoshenko couple)
+         1.2 * c * c * e * e / (GA * l);  // last term: the Timoshenko couple term
 }
 }  // namespace
 
@@ -251,7 +251,7 @@ TEST(RackSpan, SingleLoadMatchesPhysicsClosedForm) {
   }
 }
 
-// physics.md 6.2 midspan form: s^2 l^3/(48EI) + c^2 e^2 l/(12EI) + c^2 f_ax
+// docs/models/rack_span.md midspan form: s^2 l^3/(48EI) + c^2 e^2 l/(12EI) + c^2 f_ax
 // + 1.2 s^2 l/(4GA), plus 1.2 c^2 e^2/(G A l); the coupling term vanishes.
 TEST(RackSpan, MidspanMatchesPhysicsClosedForm) {
   const RackSpec rack = seed_rack();
@@ -266,7 +266,7 @@ TEST(RackSpan, MidspanMatchesPhysicsClosedForm) {
   EXPECT_NEAR(body.parts(l / 2, e, l / 2, e).coupling, 0.0, 1e-12 * want);
 }
 
-// physics.md 6.2 table, EI = 4.5e5 N m^2 (h = 75.5 mm), pin-pin, l = 2.4 m,
+// docs/models/rack_span.md table, EI = 4.5e5 N m^2 (h = 75.5 mm), pin-pin, l = 2.4 m,
 // 14 deg: k_body = 50.7 / 24.0 / 24.5 / 90.0 / 329 MN/m. The table does not
 // state e; one height, e = 81.7 mm above the neutral axis, reproduces all five
 // values to 0.11% with the exact 60 x 75.5 mm section (EI = 4.519e5 N m^2,
@@ -283,7 +283,7 @@ TEST(RackSpan, ReproducesPhysicsTable) {
   }
 }
 
-// The qualitative claims of physics.md 6.2 around the table's e. (The
+// The qualitative claims of docs/models/rack_span.md around the table's e. (The
 // "minimum not at midspan" claim needs e above about 78 mm: with the contact
 // on the rack datum, e = 37.75 + 33.93 = 71.7 mm, 0.6 m is stiffer than 1.2 m.)
 TEST(RackSpan, PhysicsTableProperties) {
@@ -322,7 +322,7 @@ TEST(RackSpan, PartsSumToInfluence) {
       EXPECT_EQ(body.parts(aj, 0.08, ak, 0.07).total(), body.influence(aj, 0.08, ak, 0.07));
 }
 
-// Three contacts a pitch (100 mm, seed 000) apart anywhere on the span: the
+// Three contacts a pitch (100 mm, the rack railway paper) apart anywhere on the span: the
 // 3x3 body flexibility matrix is symmetric positive definite.
 TEST(RackSpan, ThreeContactMatrixPositiveDefinite) {
   for (Supports sup : {Supports::kPinPin, Supports::kPinRoller}) {

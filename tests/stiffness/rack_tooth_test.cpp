@@ -1,4 +1,4 @@
-// Rack tooth (straight-sided trapezoid cantilever), physics.md 5.1-5.2, 9.1.
+// Rack tooth (straight-sided trapezoid cantilever), docs/models/tooth.md.
 //
 // References computed here: GSL QAGS (adaptive Gauss-Kronrod) of the energy
 // densities written directly from 5.1 (M = F[cos a0 (y_c - y) - sin a0 w_c],
@@ -29,7 +29,7 @@ struct RackCase {
 };
 
 // Module m, flank angle a0, rack addendum 1.0 m, dedendum 1.25 m, w_f = pi m/4
-// + dedendum tan a0 (physics.md 5.1); pinion z = 20 for the contact height.
+// + dedendum tan a0 (docs/models/tooth.md); pinion z = 20 for the contact height.
 RackCase make(double m, double a0, double x = 0.0, double clearance = 0.0) {
   RackCase s;
   s.g.pressure_angle = a0;
@@ -84,7 +84,7 @@ ToothCompliance reference(const RackCase& s, double b, double yc, double ws = 0,
 }
 
 TEST(RackTooth, ClosedFormsMatchQuadrature) {
-  // physics.md 5.2: closed forms agree with quadrature "to 5 significant
+  // docs/models/tooth.md: closed forms agree with quadrature "to 5 significant
   // figures"; we demand 1e-9 (they are exact).
   for (double a0 : {14.0, 20.0, 25.0, 5.5}) {
     const RackCase s = make(0.02, deg(a0));
@@ -111,7 +111,7 @@ TEST(RackTooth, SmallAngleBranchMatchesQuadratureAndIsContinuousAt5Degrees) {
 
 TEST(RackTooth, ZeroAngleLimitIsThePrismaticCantilever) {
   // a0 -> 0: rectangle of half-thickness w_f = pi m/4: bending y^3/(2 E b w_f^3)
-  // (= F L^3/(3EI) with I = (2/3) w_f^3 b, physics.md 5.2), shear
+  // (= F L^3/(3EI) with I = (2/3) w_f^3 b, docs/models/tooth.md), shear
   // 1.2 L/(G 2 w_f b), axial 0 (no axial component at a0 = 0).
   const double m = 0.01, b = 0.05, yc = 0.02;
   const RackCase s = make(m, 0.0);
@@ -128,7 +128,7 @@ TEST(RackTooth, ZeroAngleLimitIsThePrismaticCantilever) {
 }
 
 TEST(RackTooth, ContactHeightFollowsThePathOfContact) {
-  // physics.md 7.1/7.2: at the pitch point s_P = r sin a0 the contact is at
+  // docs/models/geometry.md: at the pitch point s_P = r sin a0 the contact is at
   // the datum shifted by x m + Delta; at s_A = s_P + ((x - h_a2*) m + Delta)/sin a0
   // it is at the rack tip (dedendum + addendum above the root).
   const double m = 0.01, a0 = deg(20), x = 0.3, delta = 0.002;
@@ -166,7 +166,7 @@ TEST(RackTooth, SpallBandWithReducedSection) {
   // Band above the contact: no effect.
   const SpallBand above{0.036, 0.044, 0.02, 0.004};
   EXPECT_NEAR(tooth.at_height(yc, &above).total(), clean.total(), 1e-12 * clean.total());
-  // Seed 001 sizes (depth 2, width 5 mm, lengths 5/10/15 mm): monotone in length.
+  // The spalling paper's sizes (depth 2, width 5 mm, lengths 5/10/15 mm): monotone in length.
   double last = clean.total();
   for (double len : {0.005, 0.010, 0.015}) {
     const SpallBand sb{0.012, 0.012 + len, 0.005, 0.002};

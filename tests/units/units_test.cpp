@@ -54,7 +54,7 @@ TEST(ParseQuantity, OtherKinds) {
   EXPECT_DOUBLE_EQ(parse_quantity("14\xC2\xB0", K::kAngle), 14.0 * kPi / 180.0);  // 14°
   EXPECT_DOUBLE_EQ(parse_quantity("0.25 rad", K::kAngle), 0.25);
   EXPECT_DOUBLE_EQ(parse_quantity("210 GPa", K::kModulus), 210e9);
-  EXPECT_DOUBLE_EQ(parse_quantity("2.11e5 MPa", K::kModulus), 211e9);  // seed 001's 40Cr
+  EXPECT_DOUBLE_EQ(parse_quantity("2.11e5 MPa", K::kModulus), 211e9);  // the spalling paper's 40Cr
   EXPECT_DOUBLE_EQ(parse_quantity("2.11e5 N/mm^2", K::kModulus), 211e9);
   EXPECT_DOUBLE_EQ(parse_quantity("50 kN", K::kForce), 50e3);
   EXPECT_DOUBLE_EQ(parse_quantity("1.2e3 N", K::kForce), 1200.0);
@@ -180,7 +180,7 @@ TEST(Format, RoundTripsThroughTheParserInEveryUnit) {
 
 // ------------------------------------------------------------ time, hardness, rate
 // Expected values: 1 yr = 365.25 d (Julian year) = 31 557 600 s, 1 d = 86 400 s;
-// 1 HB = 1 kgf/mm^2 = 9.80665 N / 1e-6 m^2 = 9.80665e6 Pa (physics.md 10.1),
+// 1 HB = 1 kgf/mm^2 = 9.80665 N / 1e-6 m^2 = 9.80665e6 Pa (docs/models/wear.md),
 // HV taken equal to HB (documented approximation). Written out by hand here,
 // not read from kSecondsPerYear / kPaPerHB.
 constexpr double kYear = 365.25 * 86400.0;  // 31 557 600 s

@@ -101,7 +101,7 @@ TEST(Effects, OffComponentsAreZero) {
   EXPECT_DOUBLE_EQ(s.stiffness, s.local_stiffness);
 }
 
-// Weber-Banaschek contact (physics.md 4.2): the contact half-width grows with
+// Weber-Banaschek contact (docs/models/tooth.md): the contact half-width grows with
 // sqrt(F), so the secant compliance falls with load and the mesh stiffens;
 // the load-share fixed point still sums to one.
 TEST(Effects, LoadDependentHertzStiffensWithLoad) {

@@ -1,4 +1,4 @@
-// Hard cases (issue 2, section 9): extreme geometry, spans, face widths,
+// Hard cases: extreme geometry, spans, face widths,
 // contact ratio exactly 1 and 2, contacts at supports. Each gives finite,
 // positive values or a DesignError with a code: never NaN, a hang or a crash.
 #include <gtest/gtest.h>
@@ -77,7 +77,7 @@ TEST(HardCases, SpansAndFaceWidths) {
 }
 
 TEST(HardCases, ContactRatioExactlyOneAndTwo) {
-  // eps drops by Delta / (p_b sin a0) per unit clearance (physics.md 7.2)
+  // eps drops by Delta / (p_b sin a0) per unit clearance (docs/models/geometry.md)
   // while the rack tip limits the start: solve for the clearance that gives
   // eps = target exactly. eps = 1: the ship lift pinion; eps = 2: a 60-tooth,
   // 14 deg, x = 0.6 pinion with a 0.3 m cutter tip round (eps > 2 at zero clearance).
@@ -124,7 +124,7 @@ TEST(HardCases, ContactExactlyAtSupportAndMidspan) {
   }
   // A contact exactly over a hinge: with the couple term off the pin-pin beam
   // does not move there (vertical, shear and axial terms vanish at a hinge);
-  // the couple still rotates the section (physics.md 6.2).
+  // the couple still rotates the section (docs/models/rack_span.md).
   Drive no_couple = d;
   no_couple.effects.couple_term = false;
   const MeshStiffnessModel model_nc(no_couple);

@@ -1,4 +1,4 @@
-// Properties of the assembled mesh stiffness curve (issue 2, section 8):
+// Properties of the assembled mesh stiffness curve:
 // positive and finite everywhere, continuous inside a zone and jumping only at
 // zone transitions / support crossings, min/max/mean independent of where the
 // uniform samples fall, load shares summing to one, and the coupled beam

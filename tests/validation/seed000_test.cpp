@@ -1,5 +1,5 @@
-// Seed 000 (hinged rack, mountain railway): trends and the rack-length table.
-// physics.md 14.3: with the paper's reduced model (body compliance inside each
+// The rack railway paper (hinged rack, mountain railway): trends and the rack-length table.
+// docs/models/mesh.md: with the paper's reduced model (body compliance inside each
 // pair, no couple term, interference ignored) and one rack body section for
 // all lengths, the minimum mesh stiffness at span 2.4 / 1.8 / 1.2 m must be
 // within 5% of the paper's 26.095 / 59.713 / 177.777 MN/m.
@@ -16,7 +16,7 @@ namespace {
 TEST(Seed000, PaperModelMinimumStiffnessVersusSpan) {
   const struct {
     const char* span;
-    double k_min_paper;  // seed 000 Table 5 [N/m]
+    double k_min_paper;  // the rack railway paper's Table 5 [N/m]
   } rows[] = {{"rack.span=2.4 m", 26.095e6}, {"rack.span=1.8 m", 59.713e6}, {"rack.span=1.2 m", 177.777e6}};
   for (const auto& row : rows) {
     SCOPED_TRACE(row.span);
@@ -42,7 +42,7 @@ TEST(Seed000, MinimumStiffnessFallsWithSpan) {
 // Clearance 0 -> 2 -> 4 mm and pressure angle 14 -> 15 -> 16 deg shorten the
 // zone with more pairs (the paper's Tables 3 and 4 trend; interference
 // ignored as the paper did). With the stated geometry eps = 2.07 at 0 mm /
-// 14 deg: the 3-pair zone exists only there (physics.md 14.1), so the trend is
+// 14 deg: the 3-pair zone exists only there (docs/models/geometry.md), so the trend is
 // checked as falling contact ratio plus a shrinking (n+1)-pair zone between
 // cases with the same n.
 TEST(Seed000, ZoneWithMorePairsShrinks) {

@@ -1,4 +1,4 @@
-// Seed 001 trends for its spall levels (normal, mild 5 mm, moderate 10 mm,
+// The spalling paper's trends for its spall levels (normal, mild 5 mm, moderate 10 mm,
 // severe 15 mm; depth 2 mm, width 5 mm) on problems/large_module.yaml:
 // the stiffness dips only while the spalled tooth is in mesh, the dip lasts
 // longer as the spall grows, and the mean falls monotonically.

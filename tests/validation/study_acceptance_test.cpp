@@ -1,4 +1,4 @@
-// Acceptance of the shipped studies (issue 4, "Validation"), run from the
+// Acceptance of the shipped studies, run from the
 // study files themselves (load_study_file -> run_study), not from specs
 // built in C++:
 //  * studies/rack_railway_sizing.yaml finds a design at least as good as the

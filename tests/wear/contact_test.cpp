@@ -1,5 +1,5 @@
-// Contact along the rack-pinion path (physics.md 4.3, 7.4, 7.5, 10.2, 10.5)
-// for the seed 004 ship-lift drive.
+// Contact along the rack-pinion path (docs/models/wear.md)
+// for the wear paper's ship-lift drive.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,11 +12,11 @@
 namespace rackopt {
 namespace {
 
-// physics.md 7.5 table: full load on one pair, b = 120 mm, E* = 111.9 GPa.
+// docs/models/wear.md table: full load on one pair, b = 120 mm, E* = 111.9 GPa.
 TEST(Contact, Seed004HertzAlongThePath) {
   const Drive d = test::ship_lift();
   const double e_star = effective_modulus(d.pinion.material, d.rack.material);
-  EXPECT_NEAR(e_star / 1e9, 111.9, 0.05);  // physics.md 4.1
+  EXPECT_NEAR(e_star / 1e9, 111.9, 0.05);  // docs/models/tooth.md
   const double w = d.load.force / d.pinion.face_width;
   struct Row {
     double s_mm, a_mm, p0_mpa;
@@ -34,11 +34,11 @@ TEST(Contact, Seed004HertzAlongThePath) {
   EXPECT_THROW(hertz_line_contact(1, 0, e_star), InputError);
 }
 
-// physics.md 7.4: zeta_rack = -1.12 at the pinion tip, zeta_pinion = -1.15 at
+// docs/models/wear.md: zeta_rack = -1.12 at the pinion tip, zeta_pinion = -1.15 at
 // the pinion root; zero sliding at the pitch point.
 TEST(Contact, Seed004SpecificSliding) {
   const MeshGeometry g = build_mesh_geometry(test::ship_lift());
-  EXPECT_NEAR(g.path.s_start * 1e3, 80.3, 0.05);  // physics.md 12.2
+  EXPECT_NEAR(g.path.s_start * 1e3, 80.3, 0.05);  // docs/models/reliability.md
   EXPECT_NEAR(g.path.s_end * 1e3, 365.9, 0.05);
   const RackPinionSliding k(g.path.s_pitch, 1e-3 * g.pinion.base_radius);
   EXPECT_NEAR(k.rack_specific_sliding(g.path.s_end), -1.12, 0.005);
@@ -53,9 +53,9 @@ TEST(Contact, Seed004SpecificSliding) {
   EXPECT_TRUE(std::isfinite(k.pinion_sliding_ratio(-1.0)));
 }
 
-// physics.md 10.5: seed 004's law dh = K p0 s2 / H with s2 = 12.9 mm at the
+// docs/models/wear.md: the wear paper's law dh = K p0 s2 / H with s2 = 12.9 mm at the
 // pinion tip (full load on one pair) gives 2.6e5 meshes to 1.5 mm for K = 3e-6;
-// ours (p_mean, physics.md 10.2) is 4/pi smaller per pass, so 4/pi more meshes.
+// ours (p_mean, docs/models/wear.md) is 4/pi smaller per pass, so 4/pi more meshes.
 TEST(Contact, Seed004ReferenceWearRateAndTheFourOverPiFactor) {
   const Drive d = test::ship_lift();
   const MeshGeometry g = build_mesh_geometry(d);

@@ -1,4 +1,4 @@
-// Hardness-depth profiles (physics.md 11): seed 004's measured polynomial,
+// Hardness-depth profiles (docs/models/wear.md): the wear paper's measured polynomial,
 // tables, and the ISO 18203 parametric case-hardening profile.
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ namespace {
 
 double hb(double pa) { return pa / kPaPerHB; }
 
-// physics.md 11.3: the cubic peaks at 596.55 HB at h = 0.53 mm.
+// docs/models/wear.md: the cubic peaks at 596.55 HB at h = 0.53 mm.
 TEST(Hardness, Seed004PolynomialMaximum) {
   const HardnessModel m(test::seed004_polynomial());
   double best = 0, at = 0;
@@ -24,11 +24,11 @@ TEST(Hardness, Seed004PolynomialMaximum) {
   EXPECT_NEAR(hb(best), 596.55, 0.01);
   EXPECT_NEAR(at * 1e3, 0.53, 0.01);
   EXPECT_NEAR(hb(m(0)), 596.0, 1e-9);
-  // Over h_max = 1.5 mm it drops only to 594.4 HB (physics.md 11.3).
+  // Over h_max = 1.5 mm it drops only to 594.4 HB (docs/models/wear.md).
   EXPECT_NEAR(hb(m(1.5e-3)), 594.4, 0.05);
 }
 
-// physics.md 11.3: 0.8 H0 = 476.8 HB at h = 6.35 mm (the ISO 3754 SHD criterion).
+// docs/models/wear.md: 0.8 H0 = 476.8 HB at h = 6.35 mm (the ISO 3754 SHD criterion).
 TEST(Hardness, Seed004PolynomialSurfaceHardeningDepth) {
   const HardnessModel m(test::seed004_polynomial(6.5e-3));
   // Bisection for H = 0.8 * 596 HB on [3, 6.5] mm.
@@ -55,7 +55,7 @@ TEST(Hardness, ClampedOutsideDataNeverZero) {
   }
   EXPECT_DOUBLE_EQ(m.first_clamped_depth(), 6.5e-3);
   // A fit declared valid to 12 mm (past its zero at 11.6 mm) with a 300 HB
-  // core: clamped from 8.95 mm on (physics.md 11.3: H = 300 HB at 8.95 mm).
+  // core: clamped from 8.95 mm on (docs/models/wear.md: H = 300 HB at 8.95 mm).
   const HardnessModel deep(test::seed004_polynomial(12e-3, 300 * kPaPerHB));
   EXPECT_NEAR(deep.first_clamped_depth() * 1e3, 8.95, 0.01);
   EXPECT_TRUE(deep.evaluate(10e-3).outside_data);
@@ -90,7 +90,7 @@ TEST(Hardness, TableInterpolatesAndClamps) {
   EXPECT_THROW(HardnessModel{p}, InputError);
 }
 
-// physics.md 11.2: H_c + (H_s - H_c) exp(-(h/delta)^n) passes through H_lim at
+// docs/models/wear.md: H_c + (H_s - H_c) exp(-(h/delta)^n) passes through H_lim at
 // D_eff exactly and falls monotonically from H_s to H_c.
 TEST(Hardness, CaseHardenedThroughLimitAtDepthAndMonotone) {
   for (double n : {1.5, 2.0, 3.0, 4.0}) {

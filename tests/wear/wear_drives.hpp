@@ -1,4 +1,4 @@
-// Test drives for the wear tests: problems/ship_lift.yaml (seed 004) with the
+// Test drives for the wear tests: problems/ship_lift.yaml (the wear paper's drive) with the
 // wear and duty filled in C++ (the problem loader does not read them yet).
 #pragma once
 
@@ -11,7 +11,7 @@ namespace rackopt::test {
 
 inline Drive ship_lift() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"); }
 
-// Seed 004's polynomial H = -0.25h^3 - 1.6786h^2 + 2h + 596 (HB, h in mm),
+// The wear paper's polynomial H = -0.25h^3 - 1.6786h^2 + 2h + 596 (HB, h in mm),
 // converted to SI (Pa, h in m): c_i [HB/mm^i] * kPaPerHB * 1e3^i.
 inline HardnessProfile seed004_polynomial(double valid_depth = 6.5e-3, double core = 0) {
   HardnessProfile p;
@@ -29,7 +29,7 @@ inline HardnessProfile constant_hardness(double hb) {
   return p;
 }
 
-// Seed 004 wear set-up: K = 3e-6 (physics.md 10.5), h_max = 1.5 mm, the
+// The wear paper's wear set-up: K = 3e-6 (docs/models/wear.md), h_max = 1.5 mm, the
 // polynomial hardness on both members, 4000 rack passes a year (an assumption:
 // only the order of magnitude matters for these tests).
 inline Drive ship_lift_wear() {

@@ -1,5 +1,5 @@
-// Archard wear life (src/rackopt/wear/wear_life.hpp) on the seed 004 ship-lift
-// drive: closed forms, scaling laws, seed 004 trends, exact finish, hard cases.
+// Archard wear life (src/rackopt/wear/wear_life.hpp) on the wear paper's ship-lift
+// drive: closed forms, scaling laws, the wear paper's trends, exact finish, hard cases.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,7 +30,7 @@ Drive constant_hardness_drive() {
 
 double max_of(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
-// Closed form (physics.md 10.2, issue 3): with a single pair in contact over
+// Closed form (docs/models/wear.md): with a single pair in contact over
 // the whole path (contact ratio exactly 1), frozen load (no profile update)
 // and constant hardness, a point at s wears k w g(s) per own pass, so the life
 // is h_max / (k w g_max) passes EXACTLY, with k = K/H, w = F/b and
@@ -56,7 +56,7 @@ TEST(WearLife, ClosedFormSinglePairFrozenLoad) {
   EXPECT_EQ(r.blocks, 1);  // frozen load: hardness integrated exactly, no blocks needed
 }
 
-// Same with the seed 004 polynomial hardness: dh/dn = k(h) w g with k = K/H(h)
+// Same with the wear paper's polynomial hardness: dh/dn = k(h) w g with k = K/H(h)
 // integrates to n = int_0^hmax H(h) dh / (K w g), the integral done here
 // analytically from the cubic's coefficients (the model tabulates H).
 TEST(WearLife, ClosedFormPolynomialHardness) {
@@ -111,7 +111,7 @@ TEST(WearLife, BandAverageKeepsConstantLoadExact) {
   EXPECT_NEAR(pw.load_per_width.back() / w, 0.5, 1e-9);
 }
 
-// The pair loads are the tooth models' rigid-body shares (physics.md 7.6), not
+// The pair loads are the tooth models' rigid-body shares (docs/models/mesh.md), not
 // an equal split: compare with MeshStiffnessModel (an independent assembly of
 // the same tooth models and the same pairs' coupling) with a rigid rack body,
 // the coupling on (the default) and off.
@@ -200,7 +200,7 @@ TEST(WearLife, ArchardScaling) {
                 model.life({.force_scale = s}).life_cycles * s / base);
 }
 
-// Seed 004 (physics.md 7.4): "wear rate of tooth root is greater than the
+// The wear paper (docs/models/wear.md): "wear rate of tooth root is greater than the
 // crown": the rack root (meets the pinion tip, specific sliding -1.12) wears
 // more than the rack tip; the pinion wears most towards its root (-1.15).
 TEST(WearLife, Seed004RackRootWearsMoreThanTip) {
@@ -225,20 +225,20 @@ TEST(WearLife, Seed004RackRootWearsMoreThanTip) {
   EXPECT_NEAR(r.rack.position.front(), (r.rack.s.back() - r.rack.s.front()) * std::tan(20 * M_PI / 180), 1e-12);
 }
 
-// physics.md 10.5: K = 3e-6 gives ~2.6e5 meshes to 1.5 mm with the seed's
+// docs/models/wear.md: K = 3e-6 gives ~2.6e5 meshes to 1.5 mm with the seed's
 // p0 law and full load on one pair at the worst point. Our law is 4/pi lower
 // per pass and a pair never carries more than F, so the life is at least
 // 2.6e5 * 4/pi (less the 0.27 % hardness drop) and of the same order.
 TEST(WearLife, Seed004OrderOfMagnitude) {
   const WearModel model(test::ship_lift_wear());
   const WearLifeResult r = model.life();
-  std::printf("[ info ] seed 004, K = 3e-6: %.4g rack passes (%.1f years at 4000/yr), %s, eps %.4f -> %.4f\n",
+  std::printf("[ info ] the wear paper, K = 3e-6: %.4g rack passes (%.1f years at 4000/yr), %s, eps %.4f -> %.4f\n",
               r.life_cycles, r.life_years, r.criterion.c_str(), r.initial_contact_ratio, r.final_contact_ratio);
   EXPECT_GT(r.life_cycles, 2.6e5 * 4 / M_PI * 0.99);
   EXPECT_LT(r.life_cycles, 2.6e6);
   EXPECT_LT(r.final_contact_ratio, r.initial_contact_ratio);  // worn ends carry less
   EXPECT_GE(r.final_contact_ratio, 1.0);                      // one loaded pair always remains
-  EXPECT_NEAR(r.initial_contact_ratio, 1.536, 0.001);         // physics.md 12.2
+  EXPECT_NEAR(r.initial_contact_ratio, 1.536, 0.001);         // docs/models/reliability.md
 }
 
 // The run ends exactly at the threshold whatever the block size, and the life
@@ -265,7 +265,7 @@ TEST(WearLife, ExactFinishAndBlockConvergence) {
   EXPECT_LT(std::abs(lives[4] - ref) / ref, 0.01);                 // 0.01: within 1 %
 }
 
-// Failure on the loaded contact ratio (seed 004's correct-mesh criterion):
+// Failure on the loaded contact ratio (the wear paper's correct-mesh criterion):
 // finishes where it reaches the allowable value, before h_max.
 TEST(WearLife, ContactRatioCriterionFinishesAtTheLimit) {
   Drive d = test::ship_lift_wear();
@@ -410,7 +410,7 @@ TEST(WearLife, ThreadSafeAndDeterministic) {
   for (std::size_t i = 0; i < samples.size(); ++i) EXPECT_EQ(serial[i], par[i]);
 }
 
-// Cost (issue 3 targets: one life < 1 ms, 1000 lives < 100 ms on one core).
+// Cost (targets: one life < 1 ms, 1000 lives < 100 ms on one core).
 // Printed; the assertion only catches gross regressions (sanitizer builds).
 TEST(WearLife, Cost) {
   const WearModel model(test::ship_lift_wear());

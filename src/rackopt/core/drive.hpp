@@ -121,7 +121,7 @@ struct Load {
 enum class RackSpanModel {
   kRigid,    // rack body rigid: costs nothing
   kCoupled,  // one beam shared by all pairs: K = 1^T (diag c + C_b)^-1 1 (docs/models/rack_span.md)
-  kPerPair,  // seed 000: body compliance added to each pair, pairs summed in parallel
+  kPerPair,  // the rack railway paper: body compliance added to each pair, pairs summed in parallel
 };
 enum class HertzModel {
   kOff,             // rigid contact (for tests and comparisons)
@@ -154,7 +154,7 @@ struct Effects {
   bool couple_term = true;         // couple e*F*cos(a0) of the axial force about the neutral axis
   bool body_axial = true;          // axial compliance of the rack body
   bool body_shear = true;          // Timoshenko shear of the rack body
-  bool interference_limit = true;  // false: ignore undercut/interference as seed 000 did
+  bool interference_limit = true;  // false: ignore undercut/interference as the rack railway paper did
   bool spalling = true;            // apply the spalls listed in faults
 
   // At least one compliance is modelled. With none the mesh is rigid: its
@@ -168,7 +168,7 @@ struct Effects {
 
 enum class Member { kPinion, kRack };
 
-// A spall (pit) on one tooth flank (seed 001; docs/models/tooth.md).
+// A spall (pit) on one tooth flank (the spalling paper; docs/models/tooth.md).
 // Position along the tooth height, measured from the lowest point of the
 // member's active profile (pinion: start of active profile; rack: the point
 // that meets the pinion tip) towards its tip.
@@ -235,7 +235,7 @@ struct WearSpec {
 // as loading the same flank (a lift's weight always loads one flank; for a
 // reversing axis this is the conservative count).
 struct Duty {
-  double rack_meshes_per_year = 0;   // passages of a pinion over a given rack tooth per year (seed 004 n_L)
+  double rack_meshes_per_year = 0;   // passages of a pinion over a given rack tooth per year (the wear paper's n_L)
   double pinion_meshes_per_year = 0; // meshes of a given pinion tooth per year (0 = same as the rack's)
   double travel_per_year = 0;        // pinion travel along the rack per year [m/yr]; 0 = duty given as mesh counts
   double stroke = 0;                 // length of one stroke [m]; 0 = duty given as mesh counts

@@ -39,10 +39,10 @@ struct WearReliabilityOptions {
   // Polled before each sample (Ctrl-C): once true the remaining samples are
   // skipped and run_wear_reliability throws rackopt::Interrupted.
   std::function<bool()> stop;
-  // KS critical values and fit intervals. 100 (was 200): the critical value's
-  // bootstrap sd is then 0.0015 vs 0.0010 at 200, i.e. 5 % vs 3.5 % of its
-  // value (docs/models/reliability.md, "Bootstrap replicates"); at 200 the
-  // bootstrap alone took 2x the 100 ms budget of a life-at-R run.
+  // KS critical values and fit intervals. At 100 the critical value's
+  // bootstrap sd is 0.0015 against 0.0010 at 200, i.e. 5 % against 3.5 % of
+  // its value (docs/models/reliability.md, "Bootstrap replicates"); at 200
+  // the bootstrap alone takes twice the 100 ms budget of a life-at-R run.
   int bootstrap_replicates = 100;
   // One random input: the lives of the samples and the exact quantile map
   // come from a verified table of life(input) (reliability/function_table.hpp)

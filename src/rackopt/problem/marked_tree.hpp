@@ -1,6 +1,6 @@
 // A YAML document as a plain tree that remembers where every key and value
 // was written, checked for what yaml-cpp 0.7 lets through silently
-// (dependencies.md 4.4): duplicate keys, merge keys `<<`, alias fan-out and
+// (docs/dependencies.md, "yaml-cpp 0.7"): duplicate keys, merge keys `<<`, alias fan-out and
 // deep nesting. The problem loader reads this tree, never yaml-cpp nodes, so
 // every error it raises can name file:line:column.
 #pragma once

@@ -113,7 +113,7 @@ constexpr KeySpec kKeySpecs[] = {
     {"wear.coefficient", QuantityKind::kDimensionless, 1e-20, 1, false, false},
     {"wear.max_depth", QuantityKind::kLength, kMinSmallLength, 1.0, false, false},
     // Below 1 the drive loses continuous contact whatever the wear: the
-    // allowable contact ratio of seed 004's criterion is at least 1.
+    // allowable contact ratio of the wear paper's criterion is at least 1.
     {"wear.min_contact_ratio", QuantityKind::kDimensionless, 1, 5, false, false},
     {"wear.profile_points", QuantityKind::kCount, 5, 2000, false, false},
     {"wear.block_fraction", QuantityKind::kDimensionless, 1e-6, 0.5, false, false},

@@ -231,7 +231,7 @@ double Distribution::survival_quantile(double q) const {
     case Family::kNormal: return a_ + gsl_cdf_gaussian_Qinv(q, b_);
     case Family::kLognormal: return a_ * std::exp(gsl_cdf_ugaussian_Qinv(q) * b_);
     case Family::kUniform: return b_ - q * (b_ - a_);
-    // Life at reliability R: a (-ln R)^(1/b) (dependencies.md 4.5).
+    // Life at reliability R: a (-ln R)^(1/b) (docs/dependencies.md, "GSL 2.7").
     case Family::kWeibull: return a_ * std::pow(-std::log(q), 1.0 / b_);
     case Family::kGamma: {
       const double x = gsl_cdf_gamma_Qinv(q, a_, b_);

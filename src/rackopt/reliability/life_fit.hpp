@@ -57,7 +57,7 @@ LifeFit fit_life_distribution(Family family, std::span<const double> sample);
 // Least-squares fit of a family to reliability points (t_i, R_i): minimises
 // sum (R_i - survival(t_i))^2 over the two parameters (Nelder-Mead on their
 // logarithms from a probit-line starting point, restarted until it stops
-// improving). For calibrating against published reliability tables (seed 004)
+// improving). For calibrating against published reliability tables (the wear paper)
 // where only R(t) values, not samples, are known. Needs >= 2 points with
 // t > 0 and 0 < R < 1, else InputError. Families: gamma, weibull, lognormal, normal.
 struct ReliabilityPointFit {

@@ -44,7 +44,7 @@ std::size_t sobol_max_dimension();
 
 // Sobol points from GSL's gsl_qrng_sobol.
 //  * dimension > sobol_max_dimension() throws InputError: GSL would silently
-//    return all zeros there (dependencies.md 4.5).
+//    return all zeros there (docs/dependencies.md, "GSL 2.7").
 //  * randomize = false: GSL's sequence as is. GSL skips the origin, so the first
 //    point is (0.5, ..., 0.5); none of the first 2^30 points has a coordinate 0.
 //  * randomize = true: Cranley-Patterson rotation u = frac(x + s) with one shift

@@ -13,7 +13,7 @@ namespace rackopt::solvers::detail {
 enum class LocalSolver { kNone, kOptional, kRequired };
 
 // What NLopt 2.7.1 (libnlopt_cxx, as packaged in Debian 12) accepts; each
-// row was checked on this machine by adding an inequality / equality
+// row was checked against Debian 12's NLopt by adding an inequality / equality
 // mconstraint and running a small problem (docs/solvers.md).
 struct NloptAlgorithmInfo {
   const char* name;        // without the NLOPT_ prefix

@@ -1,4 +1,4 @@
-// Ipopt 3.11.9 adapter (TNLP). Pitfalls handled here (dependencies.md 4.2):
+// Ipopt 3.11.9 adapter (TNLP). Pitfalls handled here (docs/dependencies.md, "Ipopt 3.11"):
 //  * Initialize("") so no ./ipopt.opt in the working directory changes a run;
 //  * no gradient_approximation option in 3.11: grad f and the (dense)
 //    constraint Jacobian come from our own finite differences, computed once

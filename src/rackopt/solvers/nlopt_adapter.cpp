@@ -1,5 +1,5 @@
-// NLopt 2.7.1 adapter. Pitfalls handled here (dependencies.md 4.1 and our
-// own probes on this machine):
+// NLopt 2.7.1 adapter. Pitfalls handled here (docs/dependencies.md, "NLopt 2.7" and our
+// own probes of Debian 12's NLopt):
 //  * exceptions out of callbacks: nlopt.hpp would turn them into
 //    std::runtime_error("nlopt failure"); every callback catches everything
 //    itself (EvaluationTracker::guard), stores the exception_ptr, calls
@@ -222,7 +222,7 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
     else if (r == nlopt::MAXTIME_REACHED) outcome.status = "max_time";
     else outcome.status = "converged";
   } catch (const nlopt::roundoff_limited&) {
-    // x is still good (dependencies.md 4.1); our best point is independent of it.
+    // x is still good (docs/dependencies.md, "NLopt 2.7"); our best point is independent of it.
     outcome.status = "converged";
     outcome.message = "NLOPT_ROUNDOFF_LIMITED";
   } catch (const nlopt::forced_stop&) {

@@ -554,7 +554,7 @@ struct MeshStiffnessModel::Impl {
     }
     for (PairState& p : st.pairs) p.body = rigid ? 0.0 : span_model->self(p.a, p.e);
     if (mode == RackSpanModel::kPerPair) {
-      // Seed 000: the body compliance inside each pair, pairs in parallel.
+      // The rack railway paper: the body compliance inside each pair, pairs in parallel.
       double k = 0;
       for (const PairState& p : st.pairs) k += 1.0 / (p.local() + p.body);
       for (PairState& p : st.pairs) p.load_share = (1.0 / (p.local() + p.body)) / k;

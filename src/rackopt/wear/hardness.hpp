@@ -4,7 +4,7 @@
 // measured: beyond that, or wherever the data falls below the core hardness,
 // the hardness is clamped to the core value and the point is flagged so that
 // the caller can warn once. Hardness is never extrapolated to zero or below
-// (the seed 004 cubic reaches 0 HB at 11.6 mm, docs/models/wear.md).
+// (the wear paper's cubic reaches 0 HB at 11.6 mm, docs/models/wear.md).
 #pragma once
 
 #include <string>

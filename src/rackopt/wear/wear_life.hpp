@@ -45,7 +45,7 @@ struct WearSample {
   // limited by the rack tip). Below max(1, wear.min_contact_ratio) the sample
   // fails at once (life 0, criterion "initial_contact_ratio"); above the largest
   // contact ratio this pair can have (zero clearance, interference limits) it
-  // fails at once with "contact_ratio_above_max" (seed 004 eq. 14 corrected,
+  // fails at once with "contact_ratio_above_max" (the wear paper's eq. 14 corrected,
   // docs/models/reliability.md: reliability needs [eps] <= eps <= eps_max).
   std::optional<double> contact_ratio;
 };
