@@ -58,6 +58,7 @@
 #include <Eigen/Dense>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/text.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/mesh_position_fe.hpp"
@@ -94,12 +95,6 @@ struct Job {
 
 std::string problem_path(const std::string& name) {
   return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml";
-}
-
-std::string join(const std::vector<std::string>& v, const char* sep) {
-  std::string out;
-  for (const std::string& s : v) out += (out.empty() ? "" : sep) + s;
-  return out;
 }
 
 std::string fmt(double v) {

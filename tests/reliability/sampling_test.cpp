@@ -155,16 +155,5 @@ TEST(EvaluateSamples, FailingSamplesAreRecordedNotFatal) {
   }
 }
 
-TEST(ParallelFor, RethrowsAfterJoining) {
-  std::vector<int> out(1000, 0);
-  EXPECT_THROW(parallel_for(1000, 4,
-                            [&](std::size_t i) {
-                              if (i == 500) throw std::runtime_error("x");
-                              out[i] = 1;
-                            }),
-               std::runtime_error);
-  EXPECT_NO_THROW(parallel_for(0, 4, [](std::size_t) {}));
-}
-
 }  // namespace
 }  // namespace rackopt::reliability

@@ -1,4 +1,5 @@
 #include "rackopt/core/suggest.hpp"
+#include "rackopt/core/text.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -19,14 +20,6 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   }
   return row[b.size()];
 }
-
-namespace {
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (auto& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-}  // namespace
 
 std::optional<std::string> closest_name(std::string_view word, const std::vector<std::string>& candidates) {
   const std::string w = lower(word);

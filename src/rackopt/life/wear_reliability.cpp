@@ -352,7 +352,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
         // the model's own life, not of the interpolant.
         const std::vector<double>& xs = table->x();
         const std::vector<double>& ys = table->y();
-        reliability::parallel_for(spec.times.size(), threads, [&](std::size_t k) {
+        parallel_for(spec.times.size(), threads, [&](std::size_t k) {
           const double t = spec.times[k] / kSecondsPerYear;
           // Outside the node values the root lies in the 1e-9 tails (or in
           // the inputs that fail at once): R is the bound's, to 1e-9.

@@ -4,17 +4,10 @@
 #include <cctype>
 
 #include "rackopt/core/suggest.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt {
 
-std::string join_names(const std::vector<std::string>& names, const std::string& separator) {
-  std::string out;
-  for (const auto& n : names) {
-    if (!out.empty()) out += separator;
-    out += n;
-  }
-  return out;
-}
 
 MarkedMap::MarkedMap(const MarkedNode* node, std::string path, const SourceMark& fallback,
                      std::vector<std::string> allowed, const std::string& example, NameSuggester suggest)
@@ -24,7 +17,7 @@ MarkedMap::MarkedMap(const MarkedNode* node, std::string path, const SourceMark&
   mark_ = node_->mark;
   if (!node_->is_map()) {
     throw InputError(node_->mark, path_,
-                     "expected a map of keys (" + join_names(allowed_) + ")" +
+                     "expected a map of keys (" + join(allowed_) + ")" +
                          (example.empty() ? "" : ", e.g. " + example) + ", found " + node_->type_name());
   }
   if (allowed_.empty()) return;
@@ -34,7 +27,7 @@ MarkedMap::MarkedMap(const MarkedNode* node, std::string path, const SourceMark&
     std::string message = "unknown key '" + e.key + "'";
     message += path_.empty() ? " at the top level" : " in " + path_;
     if (const auto best = suggest(e.key, allowed_)) message += "; did you mean '" + *best + "'?";
-    message += " Allowed keys: " + join_names(allowed_);
+    message += " Allowed keys: " + join(allowed_);
     throw InputError(e.key_mark, child_path(e.key), message);
   }
 }

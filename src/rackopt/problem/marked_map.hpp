@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "rackopt/core/text.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/problem/marked_tree.hpp"
 
@@ -59,8 +60,5 @@ class MarkedMap {
   SourceMark mark_;
   std::vector<std::string> allowed_;
 };
-
-// Names joined by `separator` ("a, b, c").
-std::string join_names(const std::vector<std::string>& names, const std::string& separator = ", ");
 
 }  // namespace rackopt

@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "rackopt/problem/bounded_yaml.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt {
 
@@ -104,13 +105,6 @@ struct Converter {
     return out;
   }
 };
-
-std::string trim(const std::string& s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
-  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
-  return s.substr(a, b - a);
-}
 
 // One step of a dotted override path: a map key, or a list index.
 struct PathStep {

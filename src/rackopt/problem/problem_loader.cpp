@@ -271,12 +271,12 @@ class Block : public MarkedMap {
   }
 
   std::string choice(const std::string& key, const std::vector<std::string>& options, const std::string& fallback) const {
-    const auto text = scalar(key, "one of " + join_names(options, " | "));
+    const auto text = scalar(key, "one of " + join(options, " | "));
     if (!text) return fallback;
     for (const auto& o : options) {
       if (text->first == o) return o;
     }
-    throw InputError(text->second, child_path(key), "'" + text->first + "' is not allowed; allowed: " + join_names(options, " | "));
+    throw InputError(text->second, child_path(key), "'" + text->first + "' is not allowed; allowed: " + join(options, " | "));
   }
 
  private:
@@ -295,7 +295,7 @@ Material find_material(const std::map<std::string, Material>& materials, const B
   std::vector<std::string> names;
   for (const auto& [n, m] : materials) names.push_back(n);
   throw InputError(name ? name->second : block.mark(), block.child_path(key),
-                   "unknown material '" + wanted + "'; defined: " + join_names(names) +
+                   "unknown material '" + wanted + "'; defined: " + join(names) +
                        " (add it under materials: {" + wanted + ": {E: ..., nu: ...}})");
 }
 
@@ -445,7 +445,7 @@ HardnessProfile read_hardness(const MarkedNode& node, const std::string& path) {
     if (std::find(own.begin(), own.end(), e.key) == own.end()) {
       throw InputError(e.key_mark, b.child_path(e.key),
                        "key '" + e.key + "' does not belong to a '" + kind + "' hardness profile; its keys: " +
-                           join_names(own));
+                           join(own));
     }
   }
   // Units of bare numbers in measured data (lists and polynomial coefficients).
@@ -1091,7 +1091,7 @@ ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& n
   throw InputError(where, "variant",
                    "unknown variant '" + wanted + "'; " +
                        (names.empty() ? std::string("this problem defines no variants")
-                                      : "defined: " + join_names(names)));
+                                      : "defined: " + join(names)));
 }
 
 Drive drive_from_tree(const ProblemTree& tree) {

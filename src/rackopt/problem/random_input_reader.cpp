@@ -87,14 +87,14 @@ RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
   std::vector<std::string> inputs;
   for (const auto& r : kRandomInputs) inputs.emplace_back(r.name);
   const auto choice = [&](const std::string& key, const std::vector<std::string>& options) {
-    const auto text = b.scalar(key, "one of " + join_names(options, " | "));
-    if (!text) b.missing(key, key == "input" ? "the uncertain input: " + join_names(options, " | ")
-                                             : "one of " + join_names(options, " | "));
+    const auto text = b.scalar(key, "one of " + join(options, " | "));
+    if (!text) b.missing(key, key == "input" ? "the uncertain input: " + join(options, " | ")
+                                             : "one of " + join(options, " | "));
     for (const auto& o : options) {
       if (text->first == o) return o;
     }
     throw InputError(text->second, b.child_path(key),
-                     "'" + text->first + "' is not allowed; allowed: " + join_names(options, " | "));
+                     "'" + text->first + "' is not allowed; allowed: " + join(options, " | "));
   };
   const std::string input = choice("input", inputs);
   const RandomInputKind* which = nullptr;
@@ -135,13 +135,13 @@ RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
     if (!out.absolute && absolute_only) {
       throw InputError(e.key_mark, b.child_path(e.key),
                        "'" + e.key + "' gives an absolute distribution, which ignores the design's own " + input +
-                           ": around the design a " + distribution + " takes " + join_names(params) +
+                           ": around the design a " + distribution + " takes " + join(params) +
                            " (docs/yaml.md, reliability.random); to keep the absolute form write absolute: true");
     }
     throw InputError(e.key_mark, b.child_path(e.key),
                      "'" + e.key + "' is not a parameter of " + (out.absolute ? "an absolute " : "a ") + distribution +
                          " distribution" + (out.absolute ? "" : " around the design") + "; its parameters: " +
-                         join_names(params));
+                         join(params));
   }
 
   if (out.absolute) {

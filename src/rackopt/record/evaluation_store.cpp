@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "rackopt/core/fnv1a.hpp"
+
 namespace rackopt::record {
 namespace {
 
@@ -70,14 +72,7 @@ std::string encode_doubles(std::span<const double> v) {
 
 // FNV-1a over the encoded bytes: the index key of x (equality is then
 // checked on the full blob, so collisions only cost a comparison).
-std::int64_t hash_bytes(const std::string& bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char c : bytes) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  return std::bit_cast<std::int64_t>(h);
-}
+std::int64_t hash_bytes(const std::string& bytes) { return std::bit_cast<std::int64_t>(fnv1a64(bytes)); }
 
 // Warnings as one TEXT cell: each warning followed by a line break; inside a
 // warning a backslash is written as two backslashes and a line break as

@@ -13,23 +13,12 @@
 #include <unordered_map>
 
 #include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt::record {
 namespace {
 
-// RFC 4180: quote fields holding a separator, a quote or a line break.
-void put_field(std::string& out, const std::string& field) {
-  if (field.find_first_of(",\"\r\n") == std::string::npos) {
-    out += field;
-    return;
-  }
-  out += '"';
-  for (char c : field) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
-}
+void put_field(std::string& out, const std::string& field) { out += csv_field(field); }
 
 // Shortest text that reads back to the same double ("inf", "-inf", "nan" for
 // the non-finite values a failed evaluation may carry).

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "rackopt/core/parallel_for.hpp"
+
 namespace rackopt::reliability {
 
 // N points in d dimensions, row-major: point i, coordinate j is u[i*d + j].
@@ -81,9 +83,5 @@ std::vector<SampleResult> evaluate_samples(std::size_t count, unsigned threads,
                                            const std::function<double(std::size_t)>& f,
                                            std::atomic<std::size_t>* completed = nullptr);
 
-// Runs body(i) for i = 0..count-1 on `threads` threads; body must write only
-// to slot i of its outputs. The first exception thrown is rethrown after all
-// threads have joined. Used by the bootstrap; exposed for reuse.
-void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body);
 
 }  // namespace rackopt::reliability

@@ -22,6 +22,7 @@
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/units/units.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt::study {
 
@@ -150,15 +151,6 @@ std::string short_num(double v) {
   return format_number(v, 6);
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += (c == '\n' || c == '\r') ? ' ' : c;
-  }
-  return out + "\"";
-}
 
 
 std::string axis_label(const std::string& name, const std::string& display_unit) {
@@ -513,12 +505,6 @@ std::string sweep_gnuplot(const StudySpec& spec, const DesignTable& t, const std
 
 // ---- report.md --------------------------------------------------------------
 
-// YAML folded text ends with a newline
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
 
 std::string md_cell(const std::string& s) {
   std::string out;
@@ -570,7 +556,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
                             const std::vector<std::string>& warnings, const fs::path& out_dir) {
   std::ostringstream o;
   o << "# Study: " << spec.name << "\n\n";
-  if (!trimmed(spec.description).empty()) o << trimmed(spec.description) << "\n\n";
+  if (!trim(spec.description).empty()) o << trim(spec.description) << "\n\n";
   o << "- kind: " << kind_name(spec.kind) << "\n";
   if (!spec.file.empty()) o << "- study file: `" << spec.file << "`\n";
   if (!spec.problem_path.empty()) o << "- problem: `" << spec.problem_path << "`\n";
@@ -788,7 +774,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("ok").value(true);
   j.key("study").value(spec.name);
   j.key("kind").value(kind_name(spec.kind));
-  j.key("description").value(trimmed(spec.description));
+  j.key("description").value(trim(spec.description));
   j.key("file").value(spec.file);
   j.key("problem").value(spec.problem_path);
   j.key("seed").value(static_cast<double>(spec.seed));

@@ -9,6 +9,7 @@
 
 #include "rackopt/solvers/adapters.hpp"
 #include "rackopt/solvers/evaluation_tracker.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt::solvers {
 
@@ -17,17 +18,6 @@ namespace {
 using detail::LocalSolver;
 using detail::NloptAlgorithmInfo;
 
-std::string lower_case(const std::string& s) {
-  std::string out;
-  for (char c : s) out.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
-  return out;
-}
-
-std::string join(const std::vector<std::string>& names) {
-  std::string out;
-  for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
-  return out;
-}
 
 // Algorithms that accept the constraint kinds the problem has, local ones
 // first (they are the usual fix), then global ones.
@@ -166,7 +156,7 @@ std::vector<std::string> nlopt_algorithm_names() {
 }
 
 std::string check_solver_settings(const SolverSettings& settings, const Problem& problem) {
-  const std::string library = lower_case(settings.library);
+  const std::string library = lower(settings.library);
   if (library != "nlopt" && library != "ipopt")
     return "unknown solver library '" + settings.library + "'; use \"nlopt\" or \"ipopt\"";
   if (std::string msg = check_problem(problem); !msg.empty()) return msg;
@@ -205,7 +195,7 @@ SolverResult minimize(const Problem& problem, std::span<const double> x0, const 
     start_points.insert(start_points.end(), design.begin(), design.end());
   }
 
-  const bool use_ipopt = lower_case(settings.library) == "ipopt";
+  const bool use_ipopt = lower(settings.library) == "ipopt";
   const NloptAlgorithmInfo* algorithm = use_ipopt ? nullptr : detail::find_nlopt_algorithm(settings.algorithm);
   const NloptAlgorithmInfo* local =
       settings.local_algorithm.empty() ? nullptr : detail::find_nlopt_algorithm(settings.local_algorithm);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "rackopt/core/fnv1a.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/study_spec.hpp"
 
@@ -165,12 +166,7 @@ std::string study_fingerprint(const StudySpec& spec) {
   c.str(tree.variant);
   c.node(tree.root);
 
-  // FNV-1a 64.
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char ch : c.text()) {
-    h ^= ch;
-    h *= 1099511628211ull;
-  }
+  const std::uint64_t h = fnv1a64(c.text(), kStudyFingerprintBasis);
   char out[17];
   std::snprintf(out, sizeof out, "%016" PRIx64, h);
   return out;

@@ -17,6 +17,7 @@
 #include <unordered_map>
 
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/parallel_for.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/fe_verification.hpp"
@@ -357,33 +358,7 @@ std::string combination_phase(const StudyProblem& p) {
 void evaluate_parallel(const StudyProblem& p, const std::vector<std::vector<double>>& xs,
                        const std::vector<std::size_t>& which, std::vector<std::optional<DesignEvaluation>>& out,
                        unsigned threads) {
-  if (which.empty()) return;
-  const unsigned n = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(which.size())));
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto work = [&] {
-    for (;;) {
-      const std::size_t k = next.fetch_add(1);
-      if (k >= which.size()) return;
-      try {
-        out[which[k]] = p.evaluate_design(xs[which[k]], 1);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-        next.store(which.size());
-        return;
-      }
-    }
-  };
-  if (n == 1) {
-    work();
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < n; ++t) pool.emplace_back(work);
-    for (auto& t : pool) t.join();
-  }
-  if (error) std::rethrow_exception(error);
+  parallel_for(which.size(), threads, [&](std::size_t k) { out[which[k]] = p.evaluate_design(xs[which[k]], 1); });
 }
 
 std::vector<std::vector<double>> sweep_points(const StudySpec& spec) {

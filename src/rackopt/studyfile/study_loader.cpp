@@ -26,6 +26,7 @@
 #include "rackopt/solvers/problem.hpp"
 #include "rackopt/studyfile/verify_section.hpp"
 #include "rackopt/units/units.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt::study {
 namespace {
@@ -36,17 +37,6 @@ constexpr const char* kCommandLine = "<command line>";
 
 // ---------------------------------------------------------------- text helpers
 
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string trim(std::string_view s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return std::string(s.substr(b, e - b));
-}
 
 // The candidate closest to `word` when it is a near miss (closest_name, the
 // rule of every loader), or else one it abbreviates.
@@ -90,12 +80,12 @@ class Section : public MarkedMap {
 
   // One of `options` (compared without case); nullopt when absent.
   std::optional<std::string> choice(const std::string& key, const std::vector<std::string>& options) const {
-    const auto t = scalar(key, "one of " + join_names(options, " | "));
+    const auto t = scalar(key, "one of " + join(options, " | "));
     if (!t) return std::nullopt;
     for (const auto& o : options) {
       if (lower(t->first) == lower(o)) return o;
     }
-    std::string message = "'" + t->first + "' is not allowed; allowed: " + join_names(options, " | ");
+    std::string message = "'" + t->first + "' is not allowed; allowed: " + join(options, " | ");
     if (const auto best = near_miss(t->first, options)) message += " (did you mean '" + *best + "'?)";
     throw InputError(t->second, child_path(key), message);
   }
@@ -266,7 +256,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
     std::string message = "'" + entry.key + "' is not a numeric problem key; a design variable is a number of the problem";
     const std::vector<std::string> examples = numeric_key_examples();
     if (const auto best = near_miss(entry.key, examples)) message += "; did you mean '" + *best + "'?";
-    message += ". Numeric keys include: " + join_names(examples) + " (docs/yaml.md)";
+    message += ". Numeric keys include: " + join(examples) + " (docs/yaml.md)";
     throw InputError(entry.key_mark, path, message);
   }
   v.kind = *kind;
@@ -343,7 +333,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
         std::vector<std::string> listed;
         for (double x : v.values) listed.push_back(format_in(x, v.kind, v.unit));
         throw InputError(start_site->mark, start_site->path,
-                         format_in(start_site->value, v.kind, v.unit) + " is not one of the values (" + join_names(listed) +
+                         format_in(start_site->value, v.kind, v.unit) + " is not one of the values (" + join(listed) +
                              "); the start of a discrete variable must be one of them");
       }
       v.start = *it;
@@ -592,13 +582,13 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
 
   // --- study -----------------------------------------------------------------
   const std::vector<std::string> kinds = {"evaluate", "sweep", "optimize", "pareto", "reliability"};
-  if (!top.has("study")) top.missing("study", "a map {name: ..., kind: " + join_names(kinds, " | ") + ", seed: 1}");
+  if (!top.has("study")) top.missing("study", "a map {name: ..., kind: " + join(kinds, " | ") + ", seed: 1}");
   const Section study(top.get("study"), "study", top.key_mark("study"), {"name", "kind", "seed", "description"},
                       "{kind: optimize, seed: 1}");
   spec.name = study.text("name", fs::path(name_for_messages).stem().string());
   spec.description = study.text("description", "");
   const auto kind_text = study.choice("kind", kinds);
-  if (!kind_text) study.missing("kind", "one of " + join_names(kinds, " | "));
+  if (!kind_text) study.missing("kind", "one of " + join(kinds, " | "));
   const std::size_t kind_index =
       static_cast<std::size_t>(std::find(kinds.begin(), kinds.end(), *kind_text) - kinds.begin());
   const StudyKind kind_values[] = {StudyKind::kEvaluate, StudyKind::kSweep, StudyKind::kOptimize, StudyKind::kPareto,
@@ -875,7 +865,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
       for (std::size_t i = 0; i < labels.size(); ++i) choices.push_back(std::to_string(i) + " = " + labels[i]);
       throw InputError(primary->second, "pareto.primary",
                        "'" + primary->first + "' is not one of the objectives; allowed: " +
-                           (choices.empty() ? std::string("(the study has no objectives)") : join_names(choices)));
+                           (choices.empty() ? std::string("(the study has no objectives)") : join(choices)));
     }
     spec.pareto.primary = *found;
   }
@@ -1001,7 +991,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
       if (total > static_cast<double>(spec.sweep.max_points)) {
         const SourceMark where = sw.has("levels") ? sw.value_mark("levels") : sw.present() ? sw.mark() : variables_mark;
         throw InputError(where, sw.has("levels") ? "sweep.levels" : "sweep",
-                         "the grid has " + format_number(total, 12) + " points (" + join_names(factors, " x ") +
+                         "the grid has " + format_number(total, 12) + " points (" + join(factors, " x ") +
                              "), more than sweep.max_points = " + std::to_string(spec.sweep.max_points) +
                              "; lower the levels, use method: lhs or sobol with fewer points, or raise max_points");
       }
@@ -1023,7 +1013,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
     }
     if (combinations > static_cast<double>(spec.max_discrete_combinations)) {
       throw InputError(variables_mark, "variables",
-                       "the discrete variables " + join_names(factors, " x ") + " make " + format_number(combinations, 12) +
+                       "the discrete variables " + join(factors, " x ") + " make " + format_number(combinations, 12) +
                            " combinations, each optimized separately; more than limits.max_discrete_combinations = " +
                            std::to_string(spec.max_discrete_combinations) +
                            "; drop values, make a variable continuous, or raise the limit");

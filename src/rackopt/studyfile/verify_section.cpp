@@ -6,16 +6,13 @@
 
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/units/units.hpp"
+#include "rackopt/core/text.hpp"
 
 namespace rackopt::study {
 namespace {
 
 constexpr const char* kForms = "fe, or a map {method: fe, positions: 4, level: 0, extended_contact: off, rack_supports: off}";
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 int whole_in(const MarkedMap& m, const std::string& key, int fallback, int lo, int hi) {
   const auto t = m.scalar(key, "a whole number");
