@@ -10,7 +10,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/atomic_file.hpp"
 #include "rackopt/output/file_check.hpp"
 
 namespace rackopt {
@@ -34,49 +34,9 @@ bool ends_with(const std::string& s, const std::string& tail) {
 }  // namespace
 
 void write_file_atomic(const std::string& path, const std::string& content) {
-  const fs::path target(path);
-  std::error_code ec;
-  if (target.has_parent_path()) {
-    fs::create_directories(target.parent_path(), ec);
-    if (ec) throw std::runtime_error("cannot create directory " + target.parent_path().string() + ": " + ec.message());
-  }
-  if (content.empty()) throw std::runtime_error("refusing to write an empty " + path);
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  const TemporaryFileGuard guard(tmp);  // a second Ctrl-C unlinks it
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  auto give_up = [&](const std::string& what, int err) {
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + what + ": " + std::strerror(err));
-  };
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      give_up("writing", errno);
-    }
-    if (n == 0) give_up("writing", EIO);
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) give_up("flushing to disk", errno);
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": closing: " + std::strerror(err));
-  }
-  const std::string why = check_output_file(tmp, path, static_cast<long long>(content.size()));
-  if (!why.empty()) {
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": the written file failed its check: " + why);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + std::strerror(err));
-  }
-  fsync_directory(target.parent_path());
+  write_file_atomically(path, content, [&](const std::string& tmp) {
+    return check_output_file(tmp, path, static_cast<long long>(content.size()));
+  });
 }
 
 std::string publish_verified(const std::string& tmp, const std::string& path) {

@@ -1,10 +1,8 @@
-// Files appear whole or not at all: content goes to a temporary file
-// `<path>.tmp.<pid>` in the same directory, is written, fsynced and verified
-// (check_output_file: size and format, docs/output.md "Guarantees"), then
-// renamed over the target (atomic on POSIX within one file system) and the
-// directory fsynced. A crash, a kill -9 or a full disk never leaves a
-// truncated CSV that looks complete; at worst a temporary file, which the
-// next run holding the folder lock removes (remove_stale_temporaries).
+// The output folder's files: written with the one atomic writer
+// (core/atomic_file.hpp) and verified by their format before they get their
+// names (check_output_file: size and format, docs/output.md "Guarantees");
+// plots published the same way; the temporary files a crash can leave, and
+// their removal by the next run that holds the folder's lock.
 #pragma once
 
 #include <string>
@@ -12,10 +10,10 @@
 
 namespace rackopt {
 
-// Writes `content` (not empty) to `path` atomically; creates missing parent
-// directories. Throws std::runtime_error naming the path and the OS error
-// (or what the verification found) on failure; the temporary file is
-// removed and `path` is left as it was.
+// Writes `content` (not empty) to `path` with write_file_atomically, the
+// temporary file checked by check_output_file as `path`'s format. Throws
+// std::runtime_error naming the path and the OS error (or what the check
+// found); `path` is then left as it was.
 void write_file_atomic(const std::string& path, const std::string& content);
 
 // Renames the finished temporary file `tmp` (written by another program,
@@ -25,9 +23,10 @@ void write_file_atomic(const std::string& path, const std::string& content);
 std::string publish_verified(const std::string& tmp, const std::string& path);
 
 // True for the names of temporary files rackopt's writers create in an
-// output folder: "<name>.tmp.<digits>" (write_file_atomic), "<name>.png.tmp"
-// (plots: the gnuplot scripts write there) and ".<name>.tmp" + 6 characters
-// (the evaluations.csv export, mkstemp).
+// output folder: ".<name>.tmp" + 6 characters (write_file_atomically),
+// "<name>.png.tmp" (plots: the gnuplot scripts write there) and
+// "<name>.tmp.<digits>" (the pid-suffixed names that folders written by
+// earlier rackopt builds may hold).
 bool is_rackopt_temporary(const std::string& file_name);
 
 // Removes every file of `dir` (not its subfolders) that is_rackopt_temporary

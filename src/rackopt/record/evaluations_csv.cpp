@@ -1,19 +1,12 @@
 // CSV export of a study's evaluations (declared in evaluation_store.hpp).
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstdlib>
 #include <charconv>
-#include <cstring>
-#include <filesystem>
-#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
-#include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/core/atomic_file.hpp"
 #include "rackopt/core/text.hpp"
+#include "rackopt/record/evaluation_store.hpp"
 
 namespace rackopt::record {
 namespace {
@@ -28,62 +21,12 @@ void put_number(std::string& out, double v) {
   out.append(buf, res.ptr);
 }
 
-[[noreturn]] void io_error(const std::string& what, const std::string& path, int err) {
-  throw std::runtime_error("cannot write '" + path + "': " + what + ": " + std::strerror(err));
-}
-
-// Temp file in the target's folder (same file system, so rename is atomic),
-// fsynced before the rename so the new name never points at missing data.
+// The record's table: every byte on disk and a complete last row before it
+// gets its name.
 void write_atomically(const std::string& path, const std::string& content) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : ".";
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("cannot create folder '" + dir.string() + "': " + ec.message());
-  std::string tmp = (dir / ("." + target.filename().string() + ".tmpXXXXXX")).string();
-  const int fd = mkstemp(tmp.data());
-  if (fd < 0) io_error("creating a temporary file", path, errno);
-  auto give_up = [&](const char* what) {
-    const int err = errno;
-    ::close(fd);
-    ::unlink(tmp.c_str());
-    io_error(what, path, err);
-  };
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      give_up("writing");
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  // mkstemp creates 0600; a table is meant to be read like any other output.
-  if (::fchmod(fd, 0644) != 0) give_up("setting permissions");
-  if (::fsync(fd) != 0) give_up("flushing to disk");
-  // Verified before it gets its name: every byte on disk, a complete last row.
-  struct stat st{};
-  if (::fstat(fd, &st) != 0) give_up("checking the written file");
-  if (static_cast<std::size_t>(st.st_size) != content.size() || content.empty() || content.back() != '\n') {
-    errno = EIO;
-    give_up("the written file is incomplete");
-  }
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    io_error("closing", path, err);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp.c_str());
-    io_error("renaming the temporary file", path, err);
-  }
-  // Make the rename itself durable (best effort: some file systems refuse).
-  const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
+  write_file_atomically(path, content, [&](const std::string&) {
+    return content.back() == '\n' ? std::string() : std::string("the last row is not complete");
+  });
 }
 
 }  // namespace

@@ -1,0 +1,31 @@
+// The one atomic file writer: a file appears whole or not at all. The content
+// goes to a temporary file made by mkostemp in the target's directory (the
+// same file system, so the rename is atomic), named ".<name>.tmp" and six
+// characters; it is written (retrying interrupted writes), made readable
+// like any other output (0644), flushed to disk and checked, then renamed
+// over the target, and the directory is flushed so the rename itself
+// survives a power cut. A crash, a kill -9 or a full disk never leaves a
+// truncated file that looks complete: at worst the temporary file, which
+// the next run holding the folder's lock removes (output/atomic_file.hpp).
+// A second Ctrl-C while it writes unlinks the temporary file
+// (TemporaryFileGuard).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace rackopt {
+
+// Looks at the written temporary file (its path) before it gets its name:
+// "" to publish it, otherwise why not.
+using WrittenFileCheck = std::function<std::string(const std::string& temporary_path)>;
+
+// Writes `content` (not empty) to `path` atomically; creates missing parent
+// directories. The size on disk is always checked against the content;
+// `check`, when given, is asked too. Throws std::runtime_error naming the
+// path and the OS error or the failed check; the temporary file is removed
+// and `path` is left as it was.
+void write_file_atomically(const std::string& path, std::string_view content, const WrittenFileCheck& check = {});
+
+}  // namespace rackopt
