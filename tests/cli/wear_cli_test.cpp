@@ -58,10 +58,10 @@ class RemoveTmpRoot : public ::testing::Environment {
 // The wear paper's reliability table (docs/models/reliability.md). The 40-year row is not in
 // the +-0.05 requirement (it is inconsistent with any fitted distribution);
 // it is checked loosely below.
-const std::map<double, double> kSeed004R{{55, 0.9743}, {60, 0.7949}, {65, 0.4054}, {75, 0.0135}};
+const std::map<double, double> kWearPaperR{{55, 0.9743}, {60, 0.7949}, {65, 0.4054}, {75, 0.0135}};
 
-TEST(WearCli, Seed004ShipLiftReproducesThePapersReliabilityTable) {
-  const std::string dir = tmp_dir("seed004");
+TEST(WearCli, WearPaperShipLiftReproducesThePapersReliabilityTable) {
+  const std::string dir = tmp_dir("wear_paper");
   const CliResult r = run("wear problems/ship_lift.yaml --json --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
@@ -80,7 +80,7 @@ TEST(WearCli, Seed004ShipLiftReproducesThePapersReliabilityTable) {
     empirical[e["t_years"].get<double>()] = e["R_empirical"].get<double>();
   }
   for (const auto& e : j["exact"]["reliability"]) exact[e["t_years"].get<double>()] = e["R"].get<double>();
-  for (const auto& [t, R] : kSeed004R) {
+  for (const auto& [t, R] : kWearPaperR) {
     ASSERT_TRUE(fit.count(t)) << t;
     EXPECT_NEAR(fit[t], R, 0.05) << "fitted R at " << t << " yr";
     EXPECT_NEAR(empirical[t], R, 0.05) << "empirical R at " << t << " yr";

@@ -33,7 +33,7 @@ inline Drive standard_drive(int z, double module, double alpha_deg, double x = 0
 // The rack railway paper as stated in docs/models/geometry.md: m = 31.831 mm (p = 100 mm), z = 22,
 // 14 deg, h_a* = 0.9, c* = 0.166 (tool addendum 1.066), rack 0.9 / 1.066.
 // Tip radius: the full round c*/(1 - sin a0) (the seed gives none).
-inline Drive seed000_drive(double alpha_deg = 14.0, double clearance = 0.0) {
+inline Drive railway_paper_drive(double alpha_deg = 14.0, double clearance = 0.0) {
   Drive d;
   d.pinion.teeth = 22;
   d.pinion.module = 0.031831;

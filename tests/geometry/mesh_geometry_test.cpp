@@ -17,7 +17,7 @@ namespace {
 
 using geometry_test::deg;
 using geometry_test::kPi;
-using geometry_test::seed000_drive;
+using geometry_test::railway_paper_drive;
 using geometry_test::standard_drive;
 
 constexpr double kMm = 1e-3;
@@ -47,9 +47,9 @@ double length_with_at_least(const MeshGeometry& g, int k) {
   return len;
 }
 
-TEST(MeshGeometry, Seed000AsStated) {
+TEST(MeshGeometry, RailwayPaperAsStated) {
   // docs/models/geometry.md (values printed to 0.01 mm).
-  Drive d = seed000_drive();
+  Drive d = railway_paper_drive();
   const MeshGeometry g = build_mesh_geometry(d);
   EXPECT_NEAR(g.pinion.pitch_radius, 350.14 * kMm, 0.006 * kMm);
   EXPECT_NEAR(g.pinion.base_radius, 339.74 * kMm, 0.006 * kMm);
@@ -94,7 +94,7 @@ TEST(MeshGeometry, Seed000AsStated) {
   EXPECT_TRUE(base_circle_warning);
 }
 
-TEST(MeshGeometry, Seed004) {
+TEST(MeshGeometry, WearPaper) {
   // docs/models/reliability.md: r = 504, r_b = 473.6, r_a = 598.5 mm, no undercut,
   // path 80.3 -> 365.9 mm, p_b = 186.0 mm, eps = 1.536. Cutter: standard
   // h_a0* = 1.25 with the usual rho* = 0.38.
@@ -112,7 +112,7 @@ TEST(MeshGeometry, Seed004) {
   EXPECT_TRUE(g.warnings.empty()) << g.warnings.front();
 }
 
-TEST(MeshGeometry, Seed001SingleContactInterval) {
+TEST(MeshGeometry, SpallingPaperSingleContactInterval) {
   // docs/models/sources.md: z = 17, x = 0, 20 deg, h_a* = 1 on a rack: eps = 1.7478,
   // single-contact interval 5.341 deg. z = 17 is just below z_min = 17.1, so
   // the value is the one with the (tiny) interference ignored.
@@ -157,12 +157,12 @@ TEST(MeshGeometry, ContactRatioMatchesClosedForm) {
   }
 }
 
-TEST(MeshGeometry, Seed000TrendsInterferenceIgnored) {
+TEST(MeshGeometry, RailwayPaperTrendsInterferenceIgnored) {
   // docs/models/geometry.md: -0.0852 in eps per 2 mm of clearance for the rack railway paper;
   // docs/models/geometry.md: triple contact 7.16 mm at Delta = 0, 14 deg, and none at
   // Delta = 2, 4 mm or at 15, 16 deg (geometric eps < 2).
   auto build = [](double alpha, double clearance) {
-    Drive d = seed000_drive(alpha, clearance);
+    Drive d = railway_paper_drive(alpha, clearance);
     d.effects.interference_limit = false;
     return build_mesh_geometry(d);
   };

@@ -18,7 +18,7 @@ namespace {
 using geometry_test::CuttingSimulation;
 using geometry_test::deg;
 using geometry_test::kPi;
-using geometry_test::seed000_drive;
+using geometry_test::railway_paper_drive;
 using geometry_test::standard_drive;
 
 // docs/models/geometry.md (Ma et al. 2014): trochoid of the tool tip round,
@@ -105,7 +105,7 @@ TEST(PinionGeneration, UndercutFormRadiusAgreesWithCuttingSimulation) {
   expect_form_radius_matches_cutting(standard_drive(12, 0.01, 20.0, 0.0, 0.0).pinion, 0.3);
   expect_form_radius_matches_cutting(standard_drive(20, 0.01, 20.0, -0.4, 0.38).pinion, 0.3);
   // The rack railway paper's geometry (docs/models/geometry.md: undercut, z_min = 30.8).
-  const PinionSpec s0 = seed000_drive().pinion;
+  const PinionSpec s0 = railway_paper_drive().pinion;
   ASSERT_TRUE(generated_form_circle(s0).undercut);
   expect_form_radius_matches_cutting(s0, 0.3);
 }
@@ -157,7 +157,7 @@ TEST(PinionGeneration, UndercutFlagAtTheTextbookBoundary) {
     }
   }
   // The rack railway paper: z_min = 30.8 (docs/models/geometry.md).
-  Drive s0 = seed000_drive();
+  Drive s0 = railway_paper_drive();
   EXPECT_NEAR(teeth_for_no_undercut(s0.pinion), 30.8, 0.05);
   s0.pinion.teeth = 30;
   EXPECT_TRUE(generated_form_circle(s0.pinion).undercut);

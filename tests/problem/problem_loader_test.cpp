@@ -26,7 +26,7 @@ using test::problem_path;
 
 // ---------------------------------------------------------------- bundled files
 
-TEST(BundledProblems, RackRailwayMatchesSeed000Table1) {
+TEST(BundledProblems, RackRailwayMatchesRailwayPaperTable1) {
   const Drive d = load_problem(problem_path("rack_railway.yaml"));
   // The rack railway paper's Table 1.
   EXPECT_EQ(d.pinion.teeth, 22);
@@ -78,7 +78,7 @@ TEST(BundledProblems, ShipLiftForceFromTorqueMatchesPhysicsMd) {
   EXPECT_NEAR(d.pinion.bore_radius, 0.228375, 1e-9);
 }
 
-TEST(BundledProblems, LargeModuleVariantsAreTheSeed001SpallLevels) {
+TEST(BundledProblems, LargeModuleVariantsAreTheSpallingPaperSpallLevels) {
   const std::string path = problem_path("large_module.yaml");
   EXPECT_EQ(problem_variants(path), (std::vector<std::string>{"normal", "mild", "moderate", "severe"}));
   const Drive normal = load_problem(path);  // the file selects "normal"

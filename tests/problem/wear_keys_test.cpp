@@ -54,7 +54,7 @@ double polynomial(const std::vector<double>& c, double h) {
 
 // ------------------------------------------------------------------ ship lift
 
-TEST(WearKeys, ShipLiftSeed004Data) {
+TEST(WearKeys, ShipLiftWearPaperData) {
   const Drive d = load_problem(problem_path("ship_lift.yaml"));
   const WearSpec& w = d.wear;
   EXPECT_DOUBLE_EQ(w.coefficient, 0.3e-5);      // the wear paper's 0.3 x 10^?, exponent calibrated

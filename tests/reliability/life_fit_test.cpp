@@ -177,7 +177,7 @@ TEST(LifeFits, HardCases) {
 const std::vector<double> kSeedYears{75, 65, 60, 55};
 const std::vector<double> kSeedR{0.0135, 0.4054, 0.7949, 0.9743};
 
-TEST(ReliabilityPointFit, Seed004GammaTable) {
+TEST(ReliabilityPointFit, WearPaperGammaTable) {
   const auto fit = fit_to_reliability_points(Family::kGamma, kSeedYears, kSeedR);
   const auto& d = fit.distribution;
   std::printf("the wear paper's gamma: shape %.4f scale %.6f y, mean %.4f y, sd %.4f y, cv %.5f, "
@@ -203,7 +203,7 @@ TEST(ReliabilityPointFit, Seed004GammaTable) {
     }
 }
 
-TEST(ReliabilityPointFit, Seed004WeibullIsTheWorst) {
+TEST(ReliabilityPointFit, WearPaperWeibullIsTheWorst) {
   // docs/models/reliability.md: "The Weibull fit is the worst: its residuals are up to 0.019."
   const auto g = fit_to_reliability_points(Family::kGamma, kSeedYears, kSeedR);
   const auto w = fit_to_reliability_points(Family::kWeibull, kSeedYears, kSeedR);

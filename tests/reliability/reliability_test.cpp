@@ -89,19 +89,19 @@ std::vector<double> gamma_lives_seconds(std::size_t n, unsigned seed, double sha
   return x;
 }
 
-ReliabilityRequest seed004_request() {
+ReliabilityRequest wear_paper_request() {
   ReliabilityRequest q;
   q.reliabilities = {0.99, 0.9, 0.5};
   for (double y : {40.0, 55.0, 60.0, 65.0, 75.0}) q.times.push_back(y * kSecondsPerYear);
   return q;
 }
 
-TEST(ReliabilitySummary, Seed004GammaLivesReproduceTheTable) {
+TEST(ReliabilitySummary, WearPaperGammaLivesReproduceTheTable) {
   // 1000 lives from the gamma fitted to docs/models/reliability.md's table: the summary
   // must accept gamma and give back the table within sampling error
   // (sd of an empirical R: sqrt(R(1-R)/1000) <= 0.016).
   const auto x = gamma_lives_seconds(1000, 31);
-  const auto s = summarize_lives(x, seed004_request());
+  const auto s = summarize_lives(x, wear_paper_request());
   ASSERT_GE(s.chosen, 0);
   EXPECT_TRUE(s.chosen_accepted);
   EXPECT_TRUE(s.candidates[0].ks.accepted);  // gamma, the true model
@@ -128,7 +128,7 @@ TEST(ReliabilitySummary, Seed004GammaLivesReproduceTheTable) {
 
 TEST(ReliabilitySummary, IdenticalForAnyThreadCount) {
   const auto x = gamma_lives_seconds(400, 32);
-  auto q = seed004_request();
+  auto q = wear_paper_request();
   q.threads = 1;
   const auto a = summarize_lives(x, q);
   q.threads = 4;
@@ -147,7 +147,7 @@ TEST(ReliabilitySummary, BimodalLivesFallBackWithWarning) {
   std::gamma_distribution<double> early(400.0, 0.1), late(400.0, 0.2);
   std::vector<double> x(1000);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = i % 2 ? early(g) : late(g);
-  const auto s = summarize_lives(x, seed004_request());
+  const auto s = summarize_lives(x, wear_paper_request());
   ASSERT_GE(s.chosen, 0);
   EXPECT_FALSE(s.chosen_accepted);
   EXPECT_FALSE(s.warnings.empty());
@@ -179,7 +179,7 @@ TEST(ReliabilitySummary, FitIntervalCoverage) {
 }
 
 TEST(ReliabilitySummary, HardCases) {
-  auto q = seed004_request();
+  auto q = wear_paper_request();
   // Failed evaluations (NaN) are excluded and counted.
   auto x = gamma_lives_seconds(300, 35);
   x[3] = std::numeric_limits<double>::quiet_NaN();
@@ -235,7 +235,7 @@ TEST(ReliabilitySummary, FromSampleResults) {
     r[i].status = i == 7 ? SampleResult::Status::kDesignError : SampleResult::Status::kOk;
     r[i].value = x[i];
   }
-  const auto s = summarize_lives(std::span<const SampleResult>(r), seed004_request());
+  const auto s = summarize_lives(std::span<const SampleResult>(r), wear_paper_request());
   EXPECT_EQ(s.failed_evaluations, 1u);
   EXPECT_EQ(s.samples_fitted, 49u);
 }

@@ -37,7 +37,7 @@ MeshGeometry fillet_geometry(const PinionSpec& p) {
 // The rack railway paper's pinion (docs/models/geometry.md): m = 31.831 mm, z = 22, 14 deg, h_a* = 0.9,
 // c* = 0.166 -> h_a0* = 1.066, rho* = c*/(1 - sin a0) = 0.21897, face 60 mm,
 // E = 210 GPa. Bore radius 150 mm is our choice (not in the seed): h_f = 2.108.
-PinionSpec seed000() {
+PinionSpec railway_paper() {
   PinionSpec p;
   p.teeth = 22;
   p.module = 0.031831;
@@ -73,7 +73,7 @@ TEST(FilletFoundation, UfIsWhereTheLineOfActionCrossesTheCentreLine) {
   // theta_c = alpha_2 - inv(alpha_c) from the tooth centre line; the LOA is
   // tangent to the base circle at T, polar angle theta_c - alpha_c (the
   // involute normal at C). Intersect line CT with the centre line x = 0.
-  const PinionSpec p = seed000();
+  const PinionSpec p = railway_paper();
   const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   const double rb = g.pinion.base_radius, a2 = g.pinion.half_base_angle;
@@ -89,7 +89,7 @@ TEST(FilletFoundation, UfIsWhereTheLineOfActionCrossesTheCentreLine) {
 
 TEST(FilletFoundation, FormulaWithHandCoefficientsAndFaceWidthScaling) {
   // theta_f = 0.1111149 rad (3.1 formula, the rack railway paper), h_f = 316.2092/150.
-  const PinionSpec p = seed000();
+  const PinionSpec p = railway_paper();
   const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   EXPECT_NEAR(f.theta_f(), 0.11111488, 1e-8);
@@ -108,11 +108,11 @@ TEST(FilletFoundation, FormulaWithHandCoefficientsAndFaceWidthScaling) {
   EXPECT_THROW(f.at(s, 0.0), InputError);
 }
 
-TEST(FilletFoundation, Seed000OrderOfMagnitude) {
+TEST(FilletFoundation, RailwayPaperOrderOfMagnitude) {
   // docs/models/tooth.md: "the rack railway paper: ... approx 3 GN/m foundation". With our chosen
   // bore (150 mm) the pitch-point value is 2.9 GN/m; accept 2-4.5 GN/m over the
   // middle of the path (the value depends on the bore and the contact).
-  const PinionSpec p = seed000();
+  const PinionSpec p = railway_paper();
   const MeshGeometry g = fillet_geometry(p);
   const FilletFoundationCompliance f(g, p);
   const double k = 1.0 / f.at(g.path.s_pitch, p.face_width);
@@ -123,7 +123,7 @@ TEST(FilletFoundation, Seed000OrderOfMagnitude) {
 TEST(FilletFoundation, PositiveAlongThePathAndOutsideRangeFlag) {
   for (int z : {8, 17, 22, 60, 150}) {
     for (double a0 : {12.0, 20.0, 30.0}) {
-      PinionSpec p = seed000();
+      PinionSpec p = railway_paper();
       p.teeth = z;
       p.module = 0.01;
       p.pressure_angle = deg(a0);
@@ -144,14 +144,14 @@ TEST(FilletFoundation, PositiveAlongThePathAndOutsideRangeFlag) {
     }
   }
   // theta_f for z = 17 is about 0.15 rad: outside the fitted range (docs/models/tooth.md).
-  PinionSpec p = seed000();
+  PinionSpec p = railway_paper();
   p.teeth = 17;
   const MeshGeometry g = fillet_geometry(p);
   EXPECT_TRUE(FilletFoundationCompliance(g, p).outside_fitted_range());
 }
 
 TEST(FilletFoundation, BoreErrors) {
-  PinionSpec p = seed000();
+  PinionSpec p = railway_paper();
   const MeshGeometry g = fillet_geometry(p);
   p.bore_radius = 0.0;
   EXPECT_THROW(FilletFoundationCompliance(g, p), InputError);

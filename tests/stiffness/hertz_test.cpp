@@ -18,7 +18,7 @@ Material steel(double E, double nu) {
   return m;
 }
 
-TEST(Hertz, LinearStiffnessSeed000) {
+TEST(Hertz, LinearStiffnessRailwayPaper) {
   // docs/models/tooth.md: k_h = pi E b/(4(1 - nu^2)) = 10.87 GN/m for b = 60 mm,
   // E = 210 GPa, nu = 0.3 (the rack railway paper).
   const Material s = steel(210e9, 0.3);
@@ -27,7 +27,7 @@ TEST(Hertz, LinearStiffnessSeed000) {
   EXPECT_NEAR(k, std::numbers::pi * 210e9 * 0.06 / (4 * (1 - 0.09)), 1e-6 * k);
 }
 
-TEST(Hertz, EffectiveModulusSeed004) {
+TEST(Hertz, EffectiveModulusWearPaper) {
   // docs/models/tooth.md: E1 = 209, E2 = 202 GPa, nu = 0.271 / 0.3 -> E* = 111.9 GPa.
   EXPECT_NEAR(effective_modulus(steel(209e9, 0.271), steel(202e9, 0.3)), 111.9e9, 0.05e9);
   EXPECT_THROW(effective_modulus(steel(0, 0.3), steel(202e9, 0.3)), InputError);

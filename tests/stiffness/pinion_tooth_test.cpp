@@ -229,10 +229,10 @@ TEST(PinionTooth, SwitchesAndClamping) {
 // The spalling paper's pinion (docs/models/sources.md: z = 17, x = 0, 20 deg, h_a* = 1); module 20 mm
 // and face 100 mm chosen here so that the 2 mm deep seed spall fits the tooth:
 // r = 170, r_b = 159.75, r_f = 145, r_a = 190 mm.
-PinionSpec seed001() { return spec(17, 0.020, 20, 1.0, 1.25, 0.0, 0.100); }
+PinionSpec spalling_paper() { return spec(17, 0.020, 20, 1.0, 1.25, 0.0, 0.100); }
 
 TEST(PinionToothSpall, OnlyTheBandBetweenContactAndRootCounts) {
-  const PinionSpec p = seed001();
+  const PinionSpec p = spalling_paper();
   const MeshGeometry g = make_geometry(p);
   const PinionToothCompliance tooth(g, p, Effects{}, Numerics{});
   const double rb = g.pinion.base_radius;
@@ -255,10 +255,10 @@ TEST(PinionToothSpall, OnlyTheBandBetweenContactAndRootCounts) {
   EXPECT_EQ(tooth.at(s, &none).total(), clean.total());
 }
 
-TEST(PinionToothSpall, Seed001LengthsIncreaseComplianceMonotonically) {
+TEST(PinionToothSpall, SpallingPaperLengthsIncreaseComplianceMonotonically) {
   // The spalling paper's spall: depth 2 mm, width 5 mm, lengths 5/10/15 mm (docs/models/sources.md),
   // lower edge at r = 162 mm, contact at the tip.
-  const PinionSpec p = seed001();
+  const PinionSpec p = spalling_paper();
   const MeshGeometry g = make_geometry(p);
   const PinionToothCompliance tooth(g, p, Effects{}, Numerics{});
   const double s = g.path.s_end;
@@ -278,7 +278,7 @@ TEST(PinionToothSpall, PittedBandMatchesCartesianWithReducedSection) {
   // integration with the reduced section written out here (docs/models/tooth.md):
   // A = 2hb - hs ws, e = -ws hs (h - hs/2)/A, I = (2/3)h^3 b - ws[h^3 - (h-hs)^3]/3 - A e^2,
   // lever (yc - y) cos a1 - (hc - e) sin a1.
-  const PinionSpec p = seed001();
+  const PinionSpec p = spalling_paper();
   const MeshGeometry g = make_geometry(p);
   Numerics n;
   n.adaptive_quadrature = true;
@@ -317,7 +317,7 @@ TEST(PinionToothSpall, BandReachingIntoTheRootSegment) {
   // r_f = 145 < r_b = 159.75 mm: a band extending below the base circle also
   // weakens the straight segment; the result grows continuously as the lower
   // edge moves down from r_b.
-  const PinionSpec p = seed001();
+  const PinionSpec p = spalling_paper();
   const MeshGeometry g = make_geometry(p);
   const PinionToothCompliance tooth(g, p, Effects{}, Numerics{});
   const double rb = g.pinion.base_radius, s = g.path.s_end;
@@ -329,7 +329,7 @@ TEST(PinionToothSpall, BandReachingIntoTheRootSegment) {
 }
 
 TEST(PinionToothSpall, ImpossibleBandsAreDesignErrors) {
-  const PinionSpec p = seed001();
+  const PinionSpec p = spalling_paper();
   const MeshGeometry g = make_geometry(p);
   const PinionToothCompliance tooth(g, p, Effects{}, Numerics{});
   const double s = g.path.s_end;

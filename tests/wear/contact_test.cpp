@@ -13,7 +13,7 @@ namespace rackopt {
 namespace {
 
 // docs/models/wear.md table: full load on one pair, b = 120 mm, E* = 111.9 GPa.
-TEST(Contact, Seed004HertzAlongThePath) {
+TEST(Contact, WearPaperHertzAlongThePath) {
   const Drive d = test::ship_lift();
   const double e_star = effective_modulus(d.pinion.material, d.rack.material);
   EXPECT_NEAR(e_star / 1e9, 111.9, 0.05);  // docs/models/tooth.md
@@ -36,7 +36,7 @@ TEST(Contact, Seed004HertzAlongThePath) {
 
 // docs/models/wear.md: zeta_rack = -1.12 at the pinion tip, zeta_pinion = -1.15 at
 // the pinion root; zero sliding at the pitch point.
-TEST(Contact, Seed004SpecificSliding) {
+TEST(Contact, WearPaperSpecificSliding) {
   const MeshGeometry g = build_mesh_geometry(test::ship_lift());
   EXPECT_NEAR(g.path.s_start * 1e3, 80.3, 0.05);  // docs/models/reliability.md
   EXPECT_NEAR(g.path.s_end * 1e3, 365.9, 0.05);
@@ -56,7 +56,7 @@ TEST(Contact, Seed004SpecificSliding) {
 // docs/models/wear.md: the wear paper's law dh = K p0 s2 / H with s2 = 12.9 mm at the
 // pinion tip (full load on one pair) gives 2.6e5 meshes to 1.5 mm for K = 3e-6;
 // ours (p_mean, docs/models/wear.md) is 4/pi smaller per pass, so 4/pi more meshes.
-TEST(Contact, Seed004ReferenceWearRateAndTheFourOverPiFactor) {
+TEST(Contact, WearPaperReferenceWearRateAndTheFourOverPiFactor) {
   const Drive d = test::ship_lift();
   const MeshGeometry g = build_mesh_geometry(d);
   const double e_star = effective_modulus(d.pinion.material, d.rack.material);

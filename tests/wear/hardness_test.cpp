@@ -14,8 +14,8 @@ namespace {
 double hb(double pa) { return pa / kPaPerHB; }
 
 // docs/models/wear.md: the cubic peaks at 596.55 HB at h = 0.53 mm.
-TEST(Hardness, Seed004PolynomialMaximum) {
-  const HardnessModel m(test::seed004_polynomial());
+TEST(Hardness, WearPaperPolynomialMaximum) {
+  const HardnessModel m(test::wear_paper_polynomial());
   double best = 0, at = 0;
   for (int i = 0; i <= 60000; ++i) {
     const double h = 6e-3 * i / 60000;
@@ -29,8 +29,8 @@ TEST(Hardness, Seed004PolynomialMaximum) {
 }
 
 // docs/models/wear.md: 0.8 H0 = 476.8 HB at h = 6.35 mm (the ISO 3754 SHD criterion).
-TEST(Hardness, Seed004PolynomialSurfaceHardeningDepth) {
-  const HardnessModel m(test::seed004_polynomial(6.5e-3));
+TEST(Hardness, WearPaperPolynomialSurfaceHardeningDepth) {
+  const HardnessModel m(test::wear_paper_polynomial(6.5e-3));
   // Bisection for H = 0.8 * 596 HB on [3, 6.5] mm.
   double lo = 3e-3, hi = 6.5e-3;
   for (int i = 0; i < 80; ++i) {
@@ -44,7 +44,7 @@ TEST(Hardness, Seed004PolynomialSurfaceHardeningDepth) {
 // Beyond the measured range: clamp to the core, flag it, never <= 0.
 TEST(Hardness, ClampedOutsideDataNeverZero) {
   // core 0 = the value at valid_depth.
-  const HardnessModel m(test::seed004_polynomial(6.5e-3));
+  const HardnessModel m(test::wear_paper_polynomial(6.5e-3));
   const double at_valid = m(6.5e-3);
   EXPECT_NEAR(m.core(), at_valid, 1e-9);
   for (double h : {6.6e-3, 8e-3, 11.6e-3, 20e-3, 1.0}) {
@@ -56,7 +56,7 @@ TEST(Hardness, ClampedOutsideDataNeverZero) {
   EXPECT_DOUBLE_EQ(m.first_clamped_depth(), 6.5e-3);
   // A fit declared valid to 12 mm (past its zero at 11.6 mm) with a 300 HB
   // core: clamped from 8.95 mm on (docs/models/wear.md: H = 300 HB at 8.95 mm).
-  const HardnessModel deep(test::seed004_polynomial(12e-3, 300 * kPaPerHB));
+  const HardnessModel deep(test::wear_paper_polynomial(12e-3, 300 * kPaPerHB));
   EXPECT_NEAR(deep.first_clamped_depth() * 1e3, 8.95, 0.01);
   EXPECT_TRUE(deep.evaluate(10e-3).outside_data);
   EXPECT_DOUBLE_EQ(hb(deep(11.6e-3)), 300.0);
@@ -65,8 +65,8 @@ TEST(Hardness, ClampedOutsideDataNeverZero) {
 
 TEST(Hardness, PolynomialWithoutPositiveCoreIsAnInputError) {
   // The cubic is negative at 12 mm: with core 0 there is nothing to clamp to.
-  EXPECT_THROW(HardnessModel(test::seed004_polynomial(12e-3, 0)), InputError);
-  EXPECT_THROW(HardnessModel(test::seed004_polynomial(0)), InputError);
+  EXPECT_THROW(HardnessModel(test::wear_paper_polynomial(12e-3, 0)), InputError);
+  EXPECT_THROW(HardnessModel(test::wear_paper_polynomial(0)), InputError);
 }
 
 TEST(Hardness, TableInterpolatesAndClamps) {

@@ -13,7 +13,7 @@ inline Drive ship_lift() { return load_problem(std::string(RACKOPT_SOURCE_DIR) +
 
 // The wear paper's polynomial H = -0.25h^3 - 1.6786h^2 + 2h + 596 (HB, h in mm),
 // converted to SI (Pa, h in m): c_i [HB/mm^i] * kPaPerHB * 1e3^i.
-inline HardnessProfile seed004_polynomial(double valid_depth = 6.5e-3, double core = 0) {
+inline HardnessProfile wear_paper_polynomial(double valid_depth = 6.5e-3, double core = 0) {
   HardnessProfile p;
   p.kind = HardnessProfile::Kind::kPolynomial;
   p.coefficients = {596 * kPaPerHB, 2 * kPaPerHB * 1e3, -1.6786 * kPaPerHB * 1e6, -0.25 * kPaPerHB * 1e9};
@@ -36,8 +36,8 @@ inline Drive ship_lift_wear() {
   Drive d = ship_lift();
   d.wear.coefficient = 3e-6;
   d.wear.max_depth = 1.5e-3;
-  d.wear.pinion_hardness = seed004_polynomial();
-  d.wear.rack_hardness = seed004_polynomial();
+  d.wear.pinion_hardness = wear_paper_polynomial();
+  d.wear.rack_hardness = wear_paper_polynomial();
   d.wear.min_contact_ratio = 1.0;
   d.duty.rack_meshes_per_year = 4000;
   d.duty.pinion_meshes_per_year = 4000;

@@ -203,7 +203,7 @@ TEST(WearLife, ArchardScaling) {
 // The wear paper (docs/models/wear.md): "wear rate of tooth root is greater than the
 // crown": the rack root (meets the pinion tip, specific sliding -1.12) wears
 // more than the rack tip; the pinion wears most towards its root (-1.15).
-TEST(WearLife, Seed004RackRootWearsMoreThanTip) {
+TEST(WearLife, WearPaperRackRootWearsMoreThanTip) {
   const Drive d = test::ship_lift_wear();
   const WearModel model(d);
   const double sP = model.geometry().path.s_pitch;
@@ -229,7 +229,7 @@ TEST(WearLife, Seed004RackRootWearsMoreThanTip) {
 // p0 law and full load on one pair at the worst point. Our law is 4/pi lower
 // per pass and a pair never carries more than F, so the life is at least
 // 2.6e5 * 4/pi (less the 0.27 % hardness drop) and of the same order.
-TEST(WearLife, Seed004OrderOfMagnitude) {
+TEST(WearLife, WearPaperOrderOfMagnitude) {
   const WearModel model(test::ship_lift_wear());
   const WearLifeResult r = model.life();
   std::printf("[ info ] the wear paper, K = 3e-6: %.4g rack passes (%.1f years at 4000/yr), %s, eps %.4f -> %.4f\n",
@@ -365,7 +365,7 @@ TEST(WearLife, DepthHardCases) {
 
   // Measured data only to 1 mm: clamped below it, warned, finite.
   d = test::ship_lift_wear();
-  d.wear.pinion_hardness = d.wear.rack_hardness = test::seed004_polynomial(1e-3);
+  d.wear.pinion_hardness = d.wear.rack_hardness = test::wear_paper_polynomial(1e-3);
   r = WearModel(d).life();
   EXPECT_TRUE(std::isfinite(r.life_cycles));
   ASSERT_FALSE(r.warnings.empty());

@@ -12,7 +12,7 @@
 namespace rackopt {
 namespace {
 
-TEST(Seed001Spall, DipOnlyWhileSpalledToothInMeshLongerAndDeeperOnAverage) {
+TEST(SpallingPaperSpall, DipOnlyWhileSpalledToothInMeshLongerAndDeeperOnAverage) {
   const StiffnessCurve normal = MeshStiffnessModel(test::problem("large_module.yaml", {"variant=normal"})).curve();
   double prev_mean = normal.k_mean;
   double prev_dip_length = 0;
@@ -56,7 +56,7 @@ TEST(Seed001Spall, DipOnlyWhileSpalledToothInMeshLongerAndDeeperOnAverage) {
 
 // A spall on a rack tooth acts only while that rack tooth is in mesh, and a
 // rack tooth meshes once per span: the dip happens once along the travel.
-TEST(Seed001Spall, RackToothSpallActsOnlyOnThatTooth) {
+TEST(SpallingPaperSpall, RackToothSpallActsOnlyOnThatTooth) {
   Drive d = test::problem("large_module.yaml", {"variant=severe"});
   d.spalls.front().member = Member::kRack;
   d.spalls.front().tooth = 5;

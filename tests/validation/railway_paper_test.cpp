@@ -13,7 +13,7 @@
 namespace rackopt {
 namespace {
 
-TEST(Seed000, PaperModelMinimumStiffnessVersusSpan) {
+TEST(RailwayPaper, PaperModelMinimumStiffnessVersusSpan) {
   const struct {
     const char* span;
     double k_min_paper;  // the rack railway paper's Table 5 [N/m]
@@ -27,7 +27,7 @@ TEST(Seed000, PaperModelMinimumStiffnessVersusSpan) {
 }
 
 // The longer span is softer, in the paper model and in the full model alike.
-TEST(Seed000, MinimumStiffnessFallsWithSpan) {
+TEST(RailwayPaper, MinimumStiffnessFallsWithSpan) {
   for (const char* file : {"rack_railway.yaml", "rack_railway_paper.yaml"}) {
     SCOPED_TRACE(file);
     double prev = INFINITY;
@@ -45,7 +45,7 @@ TEST(Seed000, MinimumStiffnessFallsWithSpan) {
 // 14 deg: the 3-pair zone exists only there (docs/models/geometry.md), so the trend is
 // checked as falling contact ratio plus a shrinking (n+1)-pair zone between
 // cases with the same n.
-TEST(Seed000, ZoneWithMorePairsShrinks) {
+TEST(RailwayPaper, ZoneWithMorePairsShrinks) {
   auto geometry = [](const std::string& set) {
     return MeshStiffnessModel(test::problem("rack_railway_paper.yaml", {set})).geometry();
   };
