@@ -6,8 +6,10 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "rackopt/geometry/mesh_geometry.hpp"
+#include "rackopt/output/stiffness_report.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/pair_coupling.hpp"
@@ -185,6 +187,26 @@ TEST(Effects, LoadDependentSharingIsTheFixedPointOfEqualApproaches) {
       }
     }
     EXPECT_GT(multi, 100) << variant;
+  }
+}
+
+// The effects line of `rackopt check` / `rackopt stiffness` names every
+// switch of the FE-grade model, so a run's text says which physics it used.
+TEST(Effects, SummaryLineNamesEveryFeGradeSwitch) {
+  auto line = [](const std::vector<std::string>& overrides) {
+    const Drive d = test::problem("rack_railway.yaml", overrides);
+    return geometry_summary(d, build_mesh_geometry(d));
+  };
+  const std::string on = line({});
+  for (const char* part : {"fillet foundation on (FE-calibrated)", "foundation on)", "Weber-Banaschek",
+                           "pair coupling on", "supported rack on"}) {
+    EXPECT_NE(on.find(part), std::string::npos) << part << "\n" << on;
+  }
+  const std::string off = line({"effects.fillet_calibration=off", "effects.supported_rack=off",
+                                "effects.pair_coupling=off", "effects.rack_foundation=off"});
+  for (const char* part : {"fillet foundation on (Sainsot's table)", "foundation off)", "pair coupling off",
+                           "supported rack off"}) {
+    EXPECT_NE(off.find(part), std::string::npos) << part << "\n" << off;
   }
 }
 

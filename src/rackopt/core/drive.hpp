@@ -130,6 +130,13 @@ enum class HertzModel {
                     // (docs/models/contact.md); the default: within ~1 % of FE
 };
 
+// The version of the default models, as the study fingerprint records it: a
+// store recorded with other models must not be resumed as if it held these
+// results. Change it whenever a default effect or model changes results.
+inline constexpr const char* kDefaultModelsVersion =
+    "pair compliance 3 (rack foundation, fillet calibration, plane-stress Weber-Banaschek contact, pair coupling, "
+    "supported rack)";
+
 // What is modelled. Each switch removes the corresponding computation when off.
 struct Effects {
   bool pinion_tooth = true;        // bending + shear + axial of the pinion tooth

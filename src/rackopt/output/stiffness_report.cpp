@@ -67,12 +67,16 @@ std::string geometry_summary(const Drive& d, const MeshGeometry& g) {
                       : e.hertz == HertzModel::kLinear ? "linear"
                                                        : "Weber-Banaschek (load dependent, plane stress)";
   o << "  effects: pinion tooth " << onoff(e.pinion_tooth) << " (root segment " << onoff(e.root_segment)
-    << "), fillet foundation " << onoff(e.fillet_foundation) << ", rack tooth " << onoff(e.rack_tooth)
+    << "), fillet foundation " << onoff(e.fillet_foundation)
+    << (e.fillet_foundation ? (e.fillet_calibration ? " (FE-calibrated)" : " (Sainsot's table)") : "") << ", rack tooth "
+    << onoff(e.rack_tooth)
     << " (foundation " << onoff(e.rack_foundation) << "), contact " << hertz << ", pair coupling "
     << onoff(e.pair_coupling) << ",\n           rack span " << span;
   if (e.rack_span != RackSpanModel::kRigid) {
     o << " [couple " << onoff(e.couple_term) << ", axial " << onoff(e.body_axial) << ", shear "
-      << onoff(e.body_shear) << "]";
+      << onoff(e.body_shear);
+    if (e.rack_span == RackSpanModel::kCoupled) o << ", supported rack " << onoff(e.supported_rack);
+    o << "]";
   }
   o << ", interference limit " << onoff(e.interference_limit) << ", spalls "
     << (e.spalling ? std::to_string(d.spalls.size()) : std::string("off")) << "\n";

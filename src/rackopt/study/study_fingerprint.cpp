@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "rackopt/core/drive.hpp"
 #include "rackopt/core/fnv1a.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/study_spec.hpp"
@@ -78,7 +79,7 @@ std::string study_fingerprint(const StudySpec& spec) {
   // The physics the recorded evaluations came from: a store made with an
   // earlier stiffness model must not be resumed as if it were this one.
   c.key("models");
-  c.str("pair compliance 2 (rack foundation, fillet calibration, plane-stress Weber-Banaschek contact)");
+  c.str(kDefaultModelsVersion);
   c.key("kind");
   c.str(kind_name(spec.kind));
   c.key("seed");
