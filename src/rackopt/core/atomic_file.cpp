@@ -22,16 +22,16 @@ namespace fs = std::filesystem;
   throw std::runtime_error("cannot write " + path + ": " + what + (err ? std::string(": ") + std::strerror(err) : ""));
 }
 
-// Makes a rename in `dir` durable (best effort: some file systems refuse).
-void fsync_directory(const fs::path& dir) {
+}  // namespace
+
+void fsync_directory_of(const std::string& path) {
+  const fs::path dir = fs::path(path).parent_path();
   const int dfd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dfd >= 0) {
     ::fsync(dfd);
     ::close(dfd);
   }
 }
-
-}  // namespace
 
 void write_file_atomically(const std::string& path, std::string_view content, const WrittenFileCheck& check) {
   if (content.empty()) fail(path, "refusing to write an empty file", 0);
@@ -84,7 +84,7 @@ void write_file_atomically(const std::string& path, std::string_view content, co
     ::unlink(tmp.c_str());
     fail(path, "renaming the temporary file", err);
   }
-  fsync_directory(dir);
+  fsync_directory_of(path);
 }
 
 }  // namespace rackopt

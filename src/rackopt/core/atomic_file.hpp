@@ -28,4 +28,8 @@ using WrittenFileCheck = std::function<std::string(const std::string& temporary_
 // and `path` is left as it was.
 void write_file_atomically(const std::string& path, std::string_view content, const WrittenFileCheck& check = {});
 
+// Flushes the directory that holds `path`, so that a rename into it survives
+// a power cut (best effort: some file systems refuse).
+void fsync_directory_of(const std::string& path);
+
 }  // namespace rackopt

@@ -18,15 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Makes a rename in `dir` durable (best effort: some file systems refuse).
-void fsync_directory(const fs::path& dir) {
-  const int dfd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
-}
-
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -35,7 +26,7 @@ bool ends_with(const std::string& s, const std::string& tail) {
 
 void write_file_atomic(const std::string& path, const std::string& content) {
   write_file_atomically(path, content, [&](const std::string& tmp) {
-    return check_output_file(tmp, path, static_cast<long long>(content.size()));
+    return check_output_file(tmp, path);  // the writer has checked the size
   });
 }
 
@@ -58,7 +49,7 @@ std::string publish_verified(const std::string& tmp, const std::string& path) {
     ::unlink(tmp.c_str());
     return std::string("cannot rename it into place: ") + std::strerror(err2);
   }
-  fsync_directory(fs::path(path).parent_path());
+  fsync_directory_of(path);
   return "";
 }
 

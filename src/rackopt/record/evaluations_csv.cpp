@@ -21,14 +21,6 @@ void put_number(std::string& out, double v) {
   out.append(buf, res.ptr);
 }
 
-// The record's table: every byte on disk and a complete last row before it
-// gets its name.
-void write_atomically(const std::string& path, const std::string& content) {
-  write_file_atomically(path, content, [&](const std::string&) {
-    return content.back() == '\n' ? std::string() : std::string("the last row is not complete");
-  });
-}
-
 }  // namespace
 
 void write_evaluations_csv(const EvaluationStore& store, const std::vector<std::string>& variable_names,
@@ -94,7 +86,9 @@ void write_evaluations_csv(const EvaluationStore& store, const std::vector<std::
     }
     out += '\n';
   });
-  write_atomically(path, out);
+  // Every row, the header included, ends with its newline; the writer checks
+  // that every byte reached the disk before the table gets its name.
+  write_file_atomically(path, out);
 }
 
 }  // namespace rackopt::record
