@@ -1,5 +1,5 @@
 #include "rackopt/study/sweep_sensitivity.hpp"
-#include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/study_result.hpp"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "rackopt/output/json_writer.hpp"
-#include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_spec.hpp"
 
 namespace rackopt::study {

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_spec.hpp"
 
 namespace rackopt::study {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "rackopt/doe/samplers.hpp"
-#include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/study_result.hpp"
 
 namespace rackopt::study {
 namespace {

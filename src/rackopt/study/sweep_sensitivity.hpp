@@ -19,7 +19,7 @@
 
 namespace rackopt::study {
 
-struct DesignResult;  // study_runner.hpp
+struct DesignResult;  // study_result.hpp
 
 // How one variable drives one metric.
 struct VariableSensitivity {
