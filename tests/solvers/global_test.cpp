@@ -188,6 +188,40 @@ TEST(Settings, MessagesSayWhatIsWrongAndWhatToUse) {
   }
 }
 
+// The shape-only check (what a study file decides before any problem
+// exists) says which setting to change, with the same messages.
+TEST(Settings, ShapeCheckNamesTheSettingToChange) {
+  rs::ProblemShape two_ineq;
+  two_ineq.dimension = 2;
+  two_ineq.inequality = 2;
+  const auto bobyqa = rs::check_solver_settings(nlopt_settings("LN_BOBYQA"), two_ineq);
+  ASSERT_TRUE(bobyqa.has_value());
+  EXPECT_EQ(bobyqa->setting, rs::SolverSetting::kAlgorithm);
+  const auto as_problem = LambdaProblem({0, 0}, {1, 1}, [](std::span<const double>) { return ok(0, {0, 0}); }, 2);
+  EXPECT_EQ(bobyqa->message, rs::check_solver_settings(nlopt_settings("LN_BOBYQA"), as_problem));
+  EXPECT_FALSE(rs::check_solver_settings(nlopt_settings("LN_COBYLA"), two_ineq).has_value());
+
+  rs::SolverSettings cobyla_with_local = nlopt_settings("LN_COBYLA");
+  cobyla_with_local.local_algorithm = "LN_BOBYQA";
+  EXPECT_EQ(rs::check_solver_settings(cobyla_with_local, two_ineq)->setting, rs::SolverSetting::kLocalAlgorithm);
+  rs::SolverSettings aeq = nlopt_settings("AUGLAG_EQ");
+  aeq.local_algorithm = "LN_BOBYQA";
+  EXPECT_EQ(rs::check_solver_settings(aeq, two_ineq)->setting, rs::SolverSetting::kLocalAlgorithm);
+  EXPECT_EQ(rs::check_solver_settings(nlopt_settings("AUGLAG_EQ"), two_ineq), std::nullopt);
+
+  rs::SolverSettings lib = nlopt_settings("LN_COBYLA");
+  lib.library = "snopt";
+  EXPECT_EQ(rs::check_solver_settings(lib, two_ineq)->setting, rs::SolverSetting::kLibrary);
+  rs::ProblemShape three_eq;
+  three_eq.dimension = 2;
+  three_eq.equality = 3;
+  EXPECT_EQ(rs::check_solver_settings(ipopt_settings(), three_eq)->setting, rs::SolverSetting::kLibrary);
+  EXPECT_EQ(rs::check_solver_settings(nlopt_settings("LD_SLSQP"), three_eq)->setting, rs::SolverSetting::kAlgorithm);
+  EXPECT_EQ(rs::check_solver_settings(nlopt_settings("LN_COBYLA", 0), two_ineq)->setting, rs::SolverSetting::kNumbers);
+  EXPECT_EQ(rs::check_solver_settings(nlopt_settings("LN_COBYLA"), rs::ProblemShape{})->setting,
+            rs::SolverSetting::kProblem);
+}
+
 TEST(Settings, SubSolverDefaultsDoNotCrash) {
   // NLopt 2.7.1 segfaults in LN_/LD_AUGLAG(_EQ) and every MLSL variant when
   // no local optimizer is set, and the generic AUGLAG/AUGLAG_EQ/G_MLSL(_LDS)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -65,12 +66,23 @@ std::string check_numbers(const SolverSettings& s) {
   return "";
 }
 
-std::string check_problem(const Problem& problem) {
-  if (problem.num_objectives() != 1)
-    return "the solvers minimize one objective but the problem has " + std::to_string(problem.num_objectives()) +
+std::optional<SolverSettingsRefusal> check_library(const SolverSettings& settings) {
+  const std::string library = lower(settings.library);
+  if (library == "nlopt" || library == "ipopt") return std::nullopt;
+  return SolverSettingsRefusal{SolverSetting::kLibrary,
+                               "unknown solver library '" + settings.library + "'; use \"nlopt\" or \"ipopt\""};
+}
+
+std::string check_shape(const ProblemShape& shape) {
+  if (shape.objectives != 1)
+    return "the solvers minimize one objective but the problem has " + std::to_string(shape.objectives) +
            "; combine them into one (weighted sum, or the others as constraints) or use a multi-objective method";
+  if (shape.dimension == 0) return "the problem has no variables";
+  return "";
+}
+
+std::string check_bounds(const Problem& problem) {
   const std::size_t n = problem.dimension();
-  if (n == 0) return "the problem has no variables";
   const std::vector<double> lo = problem.lower_bounds(), up = problem.upper_bounds();
   if (lo.size() != n || up.size() != n)
     return "the problem declares " + std::to_string(n) + " variables but gives " + std::to_string(lo.size()) +
@@ -87,44 +99,49 @@ std::string check_problem(const Problem& problem) {
   return "";
 }
 
-std::string check_nlopt(const SolverSettings& s, const Problem& problem) {
-  const std::size_t n = problem.dimension(), ni = problem.num_inequality(), ne = problem.num_equality();
+std::optional<SolverSettingsRefusal> check_nlopt(const SolverSettings& s, const ProblemShape& shape) {
+  const std::size_t n = shape.dimension, ni = shape.inequality, ne = shape.equality;
+  auto algorithm = [](std::string m) { return SolverSettingsRefusal{SolverSetting::kAlgorithm, std::move(m)}; };
+  auto local_algorithm = [](std::string m) {
+    return SolverSettingsRefusal{SolverSetting::kLocalAlgorithm, std::move(m)};
+  };
   const NloptAlgorithmInfo* a = detail::find_nlopt_algorithm(s.algorithm);
-  if (!a) return "unknown NLopt algorithm '" + s.algorithm + "'; valid names: " + join(nlopt_algorithm_names());
+  if (!a) return algorithm("unknown NLopt algorithm '" + s.algorithm + "'; valid names: " + join(nlopt_algorithm_names()));
 
   if ((ni > 0 && !a->inequality) || (ne > 0 && !a->equality)) {
     std::string msg = std::string(a->name) + " cannot handle the " + constraint_phrase(ni, ne) +
                       " of this problem; use " + join(capable_algorithms(ni, ne));
     if (is_local_algorithm(*a)) msg += ", or AUGLAG with local_algorithm " + std::string(a->name);
-    return msg;
+    return algorithm(msg);
   }
   if (ne > n)
-    return "NLopt 2.7.1 refuses more equality constraints (" + std::to_string(ne) + ") than variables (" +
-           std::to_string(n) + "); remove redundant equalities or turn some into pairs of inequalities";
+    return algorithm("NLopt 2.7.1 refuses more equality constraints (" + std::to_string(ne) + ") than variables (" +
+                     std::to_string(n) + "); remove redundant equalities or turn some into pairs of inequalities");
 
   if (a->local == LocalSolver::kNone) {
     if (!s.local_algorithm.empty())
-      return "local_algorithm '" + s.local_algorithm + "' is only used by AUGLAG and MLSL variants; " + a->name +
-             " does not take one (leave local_algorithm empty)";
-    return "";
+      return local_algorithm("local_algorithm '" + s.local_algorithm + "' is only used by AUGLAG and MLSL variants; " +
+                             a->name + " does not take one (leave local_algorithm empty)");
+    return std::nullopt;
   }
   const bool eq_only_penalized = std::string(a->name).find("AUGLAG_EQ") != std::string::npos;
   const bool local_needs_inequality = eq_only_penalized && ni > 0;
   if (s.local_algorithm.empty()) {
     if (a->local == LocalSolver::kRequired)
-      return std::string(a->name) + " needs local_algorithm (the sub-solver it drives); use one of " +
-             join(local_algorithm_names(local_needs_inequality));
+      return algorithm(std::string(a->name) + " needs local_algorithm (the sub-solver it drives); use one of " +
+                       join(local_algorithm_names(local_needs_inequality)));
   } else {
     const NloptAlgorithmInfo* l = detail::find_nlopt_algorithm(s.local_algorithm);
     if (!l || !is_local_algorithm(*l))
-      return "local_algorithm '" + s.local_algorithm + "' is not a local NLopt algorithm; use one of " +
-             join(local_algorithm_names(local_needs_inequality));
+      return local_algorithm("local_algorithm '" + s.local_algorithm + "' is not a local NLopt algorithm; use one of " +
+                             join(local_algorithm_names(local_needs_inequality)));
     if (local_needs_inequality && !l->inequality)
-      return std::string(a->name) + " passes the " + constraint_phrase(ni, 0) + " to its local_algorithm, and " +
-             l->name + " cannot handle them; use one of " + join(local_algorithm_names(true)) +
-             " as local_algorithm, or AUGLAG (which penalizes all constraints)";
+      return local_algorithm(std::string(a->name) + " passes the " + constraint_phrase(ni, 0) +
+                             " to its local_algorithm, and " + l->name + " cannot handle them; use one of " +
+                             join(local_algorithm_names(true)) +
+                             " as local_algorithm, or AUGLAG (which penalizes all constraints)");
   }
-  return "";
+  return std::nullopt;
 }
 
 // Latin hypercube of `count` points in the box, from `seed` only. The
@@ -149,26 +166,44 @@ std::vector<std::vector<double>> latin_hypercube(std::size_t count, const std::v
 
 }  // namespace
 
+ProblemShape shape_of(const Problem& problem) {
+  return ProblemShape{problem.dimension(), problem.num_objectives(), problem.num_inequality(),
+                      problem.num_equality()};
+}
+
 std::vector<std::string> nlopt_algorithm_names() {
   std::vector<std::string> names;
   for (const NloptAlgorithmInfo& a : detail::nlopt_algorithm_table()) names.push_back(a.name);
   return names;
 }
 
-std::string check_solver_settings(const SolverSettings& settings, const Problem& problem) {
+std::optional<SolverSettingsRefusal> check_solver_settings(const SolverSettings& settings, const ProblemShape& shape) {
+  if (auto r = check_library(settings)) return r;
   const std::string library = lower(settings.library);
-  if (library != "nlopt" && library != "ipopt")
-    return "unknown solver library '" + settings.library + "'; use \"nlopt\" or \"ipopt\"";
-  if (std::string msg = check_problem(problem); !msg.empty()) return msg;
-  if (std::string msg = check_numbers(settings); !msg.empty()) return msg;
+  if (std::string msg = check_shape(shape); !msg.empty()) return SolverSettingsRefusal{SolverSetting::kProblem, msg};
+  if (std::string msg = check_numbers(settings); !msg.empty())
+    return SolverSettingsRefusal{SolverSetting::kNumbers, msg};
   if (library == "ipopt") {
-    if (problem.num_equality() > problem.dimension())
-      return "Ipopt needs at least as many variables as equality constraints; the problem has " +
-             std::to_string(problem.num_equality()) + " equalities for " + std::to_string(problem.dimension()) +
-             " variables (too few degrees of freedom)";
-    return "";
+    if (shape.equality > shape.dimension)
+      return SolverSettingsRefusal{
+          SolverSetting::kLibrary,
+          "Ipopt needs at least as many variables as equality constraints; the problem has " +
+              std::to_string(shape.equality) + " equalities for " + std::to_string(shape.dimension) +
+              " variables (too few degrees of freedom)"};
+    return std::nullopt;
   }
-  return check_nlopt(settings, problem);
+  return check_nlopt(settings, shape);
+}
+
+std::string check_solver_settings(const SolverSettings& settings, const Problem& problem) {
+  const ProblemShape shape = shape_of(problem);
+  // The library first, then the problem's own bounds, then what the settings
+  // make of its shape: the first thing to fix is named first.
+  if (auto r = check_library(settings)) return r->message;
+  if (std::string msg = check_shape(shape); !msg.empty()) return msg;
+  if (std::string msg = check_bounds(problem); !msg.empty()) return msg;
+  const auto r = check_solver_settings(settings, shape);
+  return r ? r->message : "";
 }
 
 std::string check_solver_settings(const SolverSettings& settings, const Problem& problem, std::span<const double> x0) {

@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -84,6 +85,33 @@ struct SolverResult {
   std::size_t gradient_evaluations = 0;  // how many of `evaluations` were finite-difference probes
   std::vector<double> best_history;  // best feasible objective after each evaluation, +inf before the first
 };
+
+// The counts that decide whether a solver can run a problem, known before
+// the problem exists (a study file names its variables and constraints).
+struct ProblemShape {
+  std::size_t dimension = 0;   // continuous variables the solver moves
+  std::size_t objectives = 1;
+  std::size_t inequality = 0;  // constraints g(x) <= 0
+  std::size_t equality = 0;    // constraints h(x) = 0
+};
+ProblemShape shape_of(const Problem& problem);
+
+// The setting a refusal concerns, so a study file can point at its line.
+enum class SolverSetting {
+  kLibrary,         // the library, or what the library cannot do (Ipopt's equality count)
+  kAlgorithm,       // the NLopt algorithm, or what it cannot do with this shape
+  kLocalAlgorithm,  // the sub-solver of AUGLAG/MLSL
+  kNumbers,         // a budget or tolerance out of range
+  kProblem,         // the shape itself (no variables, not one objective)
+};
+struct SolverSettingsRefusal {
+  SolverSetting setting;
+  std::string message;  // what is wrong AND what to use instead
+};
+
+// Whether `settings` can run a problem of `shape`: nullopt when they can;
+// otherwise which setting is wrong and why (the same messages as below).
+std::optional<SolverSettingsRefusal> check_solver_settings(const SolverSettings& settings, const ProblemShape& shape);
 
 // Empty string when `settings` can run `problem`; otherwise a message saying
 // what is wrong AND what to use instead. Checks the library and algorithm

@@ -23,7 +23,7 @@
 #include "rackopt/problem/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
-#include "rackopt/solvers/problem.hpp"
+#include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/studyfile/verify_section.hpp"
 #include "rackopt/units/units.hpp"
 #include "rackopt/core/text.hpp"
@@ -433,30 +433,6 @@ bool path_within(const std::string& path, const std::string& key) {
 }
 
 // ------------------------------------------------------------------- solver
-
-// A Problem with the counts of a study's solver problem, only for
-// check_solver_settings (never evaluated).
-class CountsProblem : public solvers::Problem {
- public:
-  CountsProblem(std::vector<std::string> names, std::size_t inequality, std::size_t equality)
-      : names_(std::move(names)), ni_(inequality), ne_(equality) {}
-  std::size_t dimension() const override { return names_.size(); }
-  std::vector<std::string> variable_names() const override { return names_; }
-  std::vector<double> lower_bounds() const override { return std::vector<double>(names_.size(), 0.0); }
-  std::vector<double> upper_bounds() const override { return std::vector<double>(names_.size(), 1.0); }
-  std::size_t num_inequality() const override { return ni_; }
-  std::size_t num_equality() const override { return ne_; }
-  solvers::Evaluation evaluate(std::span<const double>) const override {
-    solvers::Evaluation e;
-    e.status = solvers::EvaluationStatus::kFailed;
-    e.message = "settings check only";
-    return e;
-  }
-
- private:
-  std::vector<std::string> names_;
-  std::size_t ni_, ne_;
-};
 
 std::uint64_t read_seed(const Section& s, const std::string& key, std::uint64_t fallback) {
   const auto t = s.scalar(key, "a whole number >= 0");
@@ -917,40 +893,45 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   spec.verify_fe = read_verify_section(top);
 
   // --- what each kind needs ------------------------------------------------------------
-  const std::string kind_text_s(kind_name(spec.kind));
-  const SourceMark need_objectives_mark = top.has("objectives") ? objectives_mark : kind_mark;
-  const SourceMark need_variables_mark = top.has("variables") ? variables_mark : kind_mark;
-  const std::string need_key = top.has("objectives") ? "objectives" : "study.kind";
-  if (spec.kind == StudyKind::kOptimize && spec.objectives.size() != 1) {
-    throw InputError(need_objectives_mark, need_key,
-                     "an optimize study needs exactly one objective, found " + std::to_string(spec.objectives.size()) +
-                         (spec.objectives.size() > 1 ? " (for 2 or 3 objectives use kind: pareto; or turn the others "
-                                                       "into constraints)"
-                                                     : " (e.g. objectives: [stiffness_fluctuation])"));
-  }
-  if (spec.kind == StudyKind::kPareto && (spec.objectives.size() < 2 || spec.objectives.size() > 3)) {
-    throw InputError(need_objectives_mark, need_key,
-                     "a pareto study needs 2 or 3 objectives, found " + std::to_string(spec.objectives.size()) +
-                         (spec.objectives.size() < 2 ? " (for one objective use kind: optimize)" : ""));
-  }
-  const bool needs_variables =
-      spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto || spec.kind == StudyKind::kSweep;
-  if (needs_variables && spec.variables.empty()) {
-    throw InputError(need_variables_mark, top.has("variables") ? "variables" : "study.kind",
-                     "a " + kind_text_s + " study needs at least one design variable, e.g. variables: "
-                     "{pinion.pressure_angle: [14 deg, 25 deg]}");
-  }
-  if (spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability) {
-    for (auto& v : spec.variables) {
-      if (v.start) continue;
-      if (v.values.size() == 1) {
-        v.start = v.values.front();
-        continue;
-      }
-      throw InputError(v.mark, "variables." + v.key,
-                       "an " + kind_text_s + " study computes one design: give start (e.g. {lower: ..., upper: ..., "
-                       "start: ...}) or a single value ({values: [...]})");
+  // Where a broken kind rule points: the key to change, or study.kind when
+  // the section the kind needs is missing altogether.
+  auto rule_site = [&](const StudyRuleViolation& v) -> std::pair<SourceMark, std::string> {
+    auto value_or_section = [](const Section& sec, const char* key, const std::string& path) {
+      return std::pair<SourceMark, std::string>{sec.has(key) ? sec.value_mark(key) : sec.mark(), path};
+    };
+    switch (v.part) {
+      case StudyRulePart::kObjectives:
+        if (top.has("objectives")) return {objectives_mark, "objectives"};
+        return {kind_mark, "study.kind"};
+      case StudyRulePart::kVariables:
+        if (top.has("variables")) return {variables_mark, "variables"};
+        return {kind_mark, "study.kind"};
+      case StudyRulePart::kVariable:
+        return {spec.variables[v.variable].mark, "variables." + spec.variables[v.variable].key};
+      case StudyRulePart::kSweepGrid:
+        if (sw.has("levels")) return {sw.value_mark("levels"), "sweep.levels"};
+        return {sw.present() ? sw.mark() : variables_mark, "sweep"};
+      case StudyRulePart::kSweepPoints: return {sw.value_mark("points"), "sweep.points"};
+      case StudyRulePart::kSolverLibrary: return value_or_section(sv, "library", "solver.library");
+      case StudyRulePart::kSolverLocalAlgorithm:
+        if (sv.has("local_algorithm")) return {sv.value_mark("local_algorithm"), "solver.local_algorithm"};
+        return value_or_section(sv, "algorithm", "solver.algorithm");
+      case StudyRulePart::kSolverAlgorithm: return value_or_section(sv, "algorithm", "solver.algorithm");
+      case StudyRulePart::kParetoMethod:
+        if (pa.has("method")) return {pa.value_mark("method"), "pareto.method"};
+        if (sv.has("algorithm")) return {sv.value_mark("algorithm"), "solver.algorithm"};
+        return {kind_mark, "solver.algorithm"};
     }
+    return {kind_mark, "study.kind"};
+  };
+  // One design for evaluate/reliability: a single listed value is its start.
+  if (spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability) {
+    for (auto& v : spec.variables)
+      if (!v.start && v.values.size() == 1) v.start = v.values.front();
+  }
+  if (const auto broken = check_study_kind_rules(spec)) {
+    const auto [where, key] = rule_site(*broken);
+    throw InputError(where, key, broken->message);
   }
   if ((spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability) && !spec.variables.empty()) {
     std::vector<std::pair<std::string, double>> design;
@@ -977,49 +958,6 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
     }
   }
 
-  // Sweep size, before anything runs.
-  if (spec.kind == StudyKind::kSweep) {
-    if (spec.sweep.method == SweepSpec::Method::kGrid) {
-      double total = 1;
-      std::vector<std::string> factors;
-      for (const auto& v : spec.variables) {
-        const std::size_t n =
-            v.discrete() ? v.values.size() : static_cast<std::size_t>(v.levels > 0 ? v.levels : spec.sweep.levels);
-        total *= static_cast<double>(n);
-        factors.push_back(v.key + " " + std::to_string(n));
-      }
-      if (total > static_cast<double>(spec.sweep.max_points)) {
-        const SourceMark where = sw.has("levels") ? sw.value_mark("levels") : sw.present() ? sw.mark() : variables_mark;
-        throw InputError(where, sw.has("levels") ? "sweep.levels" : "sweep",
-                         "the grid has " + format_number(total, 12) + " points (" + join(factors, " x ") +
-                             "), more than sweep.max_points = " + std::to_string(spec.sweep.max_points) +
-                             "; lower the levels, use method: lhs or sobol with fewer points, or raise max_points");
-      }
-    } else if (spec.sweep.points > spec.sweep.max_points) {
-      throw InputError(sw.value_mark("points"), "sweep.points",
-                       std::to_string(spec.sweep.points) + " points is more than sweep.max_points = " +
-                           std::to_string(spec.sweep.max_points) + "; lower points or raise max_points");
-    }
-  }
-
-  // Discrete combinations (optimize / pareto enumerate them).
-  if (spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto) {
-    double combinations = 1;
-    std::vector<std::string> factors;
-    for (const auto& v : spec.variables) {
-      if (!v.discrete()) continue;
-      combinations *= static_cast<double>(v.values.size());
-      factors.push_back(v.key + " (" + std::to_string(v.values.size()) + " values)");
-    }
-    if (combinations > static_cast<double>(spec.max_discrete_combinations)) {
-      throw InputError(variables_mark, "variables",
-                       "the discrete variables " + join(factors, " x ") + " make " + format_number(combinations, 12) +
-                           " combinations, each optimized separately; more than limits.max_discrete_combinations = " +
-                           std::to_string(spec.max_discrete_combinations) +
-                           "; drop values, make a variable continuous, or raise the limit");
-    }
-  }
-
   // --- metrics against the problem ---------------------------------------------------
   for (const MetricSite& site : metric_sites) {
     try {
@@ -1040,47 +978,6 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
     }
   }
 
-  // --- solver settings against the problem the runner will build ----------------------
-  if (spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto) {
-    std::vector<std::string> names;
-    for (const auto& v : spec.variables) {
-      if (!v.discrete()) names.push_back(v.key);
-    }
-    std::size_t ni = 0, ne = 0;
-    for (const auto& c : spec.constraints) {
-      ni += (c.min ? 1 : 0) + (c.max ? 1 : 0);
-      ne += c.equals ? 1 : 0;
-    }
-    auto solver_error_mark = [&](const std::string& message) -> std::pair<SourceMark, std::string> {
-      if (message.rfind("local_algorithm", 0) == 0 && sv.has("local_algorithm")) {
-        return {sv.value_mark("local_algorithm"), "solver.local_algorithm"};
-      }
-      if (message.rfind("unknown solver library", 0) == 0 || so.library == "ipopt") {
-        return {sv.has("library") ? sv.value_mark("library") : sv.mark(), "solver.library"};
-      }
-      return {sv.has("algorithm") ? sv.value_mark("algorithm") : sv.mark(), "solver.algorithm"};
-    };
-    if (!names.empty()) {
-      const CountsProblem own(names, ni, ne);
-      if (const std::string msg = solvers::check_solver_settings(so, own); !msg.empty()) {
-        const auto [where, key] = solver_error_mark(msg);
-        throw InputError(where, key, msg);
-      }
-      if (spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kEpsilonConstraint) {
-        const std::size_t bounds = spec.objectives.size() - 1;
-        const CountsProblem eps(names, ni + bounds, ne);
-        if (const std::string msg = solvers::check_solver_settings(so, eps); !msg.empty()) {
-          const SourceMark where = pa.has("method") ? pa.value_mark("method")
-                                   : sv.has("algorithm") ? sv.value_mark("algorithm")
-                                                         : kind_mark;
-          throw InputError(where, pa.has("method") ? "pareto.method" : "solver.algorithm",
-                           "the eps_constraint method bounds the other " + std::to_string(bounds) +
-                               " objective(s) by inequality constraints: " + msg +
-                               "; or use pareto method: weighted_sum (convex parts of the front only)");
-        }
-      }
-    }
-  }
   spec.pareto.solver = spec.solver;
   return spec;
 }

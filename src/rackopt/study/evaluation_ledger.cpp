@@ -1,0 +1,220 @@
+#include "rackopt/study/evaluation_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <thread>
+
+namespace rackopt::study {
+
+namespace {
+
+// Shown once each; a sweep over a region with undercut would otherwise list
+// one warning per design.
+constexpr std::size_t kMaxWarnings = 20;
+
+unsigned resolve_threads(unsigned requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw > 0 ? hw : 1;
+}
+
+}  // namespace
+
+std::string bits_key(std::span<const double> x) {
+  std::string k(x.size() * sizeof(double), '\0');
+  if (!x.empty()) std::memcpy(k.data(), x.data(), k.size());
+  return k;
+}
+
+EvaluationLedger::EvaluationLedger(const StudySpec& spec, const RunOptions& options, StudyProblem& base)
+    : spec_(spec), options_(options), base_(base), threads_(resolve_threads(options.threads)) {}
+
+void EvaluationLedger::open_store(const std::string& path) {
+  store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume));
+  preexisting_rows_ = static_cast<std::int64_t>(store_->size());
+  store_->set_meta("status", "running");
+  store_->set_meta("kind", kind_name(spec_.kind));
+  store_->set_meta("study", spec_.name);
+}
+
+bool EvaluationLedger::stop_requested() {
+  if (!stopped_ && options_.stop && options_.stop()) stopped_ = true;
+  return stopped_;
+}
+
+// The same metric doubles through the same mapping give bit-identical
+// numbers, so a resumed solver sees what it saw before.
+DesignEvaluation EvaluationLedger::rebuild(const record::RecordedEvaluation& r) const {
+  DesignEvaluation d;
+  d.x = r.x;
+  const auto& labels = base_.metric_labels();
+  d.metric_values.assign(labels.size(), 0.0);
+  d.metric_ok.assign(labels.size(), false);
+  for (const auto& [name, value] : r.metrics) {
+    const auto it = std::find(labels.begin(), labels.end(), name);
+    if (it == labels.end()) continue;
+    const auto i = static_cast<std::size_t>(it - labels.begin());
+    d.metric_values[i] = value;
+    d.metric_ok[i] = true;
+  }
+  d.evaluation = base_.map_metrics(d.metric_values, d.metric_ok, r.message);
+  d.warnings = r.warnings;
+  if (!r.ok && d.evaluation.ok()) {
+    // Recorded as failed although every metric is present: trust the record.
+    d.evaluation = solvers::Evaluation{};
+    d.evaluation.status = solvers::EvaluationStatus::kFailed;
+    d.evaluation.message = r.message;
+  }
+  return d;
+}
+
+std::optional<Obtained> EvaluationLedger::lookup(std::span<const double> x) {
+  std::optional<record::RecordedEvaluation> r = store_->find(x);
+  if (!r) return std::nullopt;
+  Obtained o{rebuild(*r), Origin::kRepeat};
+  if (r->id <= preexisting_rows_ && counted_rows_.insert(r->id).second) o.origin = Origin::kReused;
+  return o;
+}
+
+std::optional<DesignEvaluation> EvaluationLedger::recorded(std::span<const double> x) const {
+  std::optional<record::RecordedEvaluation> r = store_->find(x);
+  if (!r) return std::nullopt;
+  return rebuild(*r);
+}
+
+Obtained EvaluationLedger::obtain(const StudyProblem& p, std::span<const double> x) {
+  if (auto o = lookup(x)) return std::move(*o);
+  return Obtained{p.evaluate_design(x, threads_), Origin::kNew};
+}
+
+void EvaluationLedger::settle(const Obtained& o, const std::string& label, bool gradient_probe, bool ranks) {
+  if (o.origin == Origin::kRepeat) return;
+  const DesignEvaluation& d = o.design;
+  if (o.origin == Origin::kNew) {
+    append(d, label, gradient_probe);
+  } else {
+    ++result_.reused_evaluations;
+  }
+  // New and reused alike, at the design's first use: a resumed run lists
+  // the warnings in the order of an uninterrupted one.
+  for (const auto& w : d.warnings) add_warning(w);
+  ++result_.evaluations;
+  if (!d.evaluation.ok()) ++result_.failed_evaluations;
+  track(d, label, ranks);
+  if (options_.progress) {
+    Progress pr;
+    pr.done = result_.evaluations;
+    pr.budget = std::max(budget_, pr.done);
+    pr.failed = result_.failed_evaluations;
+    if (best_) pr.best = best_->objectives.empty() ? std::optional<double>() : best_->objectives[0];
+    pr.phase = phase_;
+    options_.progress(pr);
+  }
+}
+
+DesignResult EvaluationLedger::to_result(const DesignEvaluation& d, const std::string& label) const {
+  DesignResult r;
+  r.x = d.x;
+  r.metric_labels = base_.metric_labels();
+  r.metric_values = d.metric_values;
+  r.metric_ok = d.metric_ok;
+  r.ok = d.evaluation.ok();
+  r.max_violation = solvers::max_violation(d.evaluation);
+  r.feasible = solvers::is_feasible(d.evaluation, spec_.solver.constraint_tolerance);
+  r.message = d.evaluation.message;
+  r.warnings = d.warnings;
+  r.label = label;
+  r.objectives = own_objectives(d);
+  return r;
+}
+
+std::vector<double> EvaluationLedger::own_objectives(const DesignEvaluation& d) const {
+  std::vector<double> out;
+  const auto& labels = base_.metric_labels();
+  for (const auto& o : spec_.objectives) {
+    const auto i = static_cast<std::size_t>(
+        std::find(labels.begin(), labels.end(), metrics::to_string(o.metric)) - labels.begin());
+    out.push_back(i < d.metric_values.size() ? d.metric_values[i] : 0.0);
+  }
+  return out;
+}
+
+std::optional<DesignResult> EvaluationLedger::best_of_tag(std::size_t t) const {
+  const auto it = tag_best_.find(t);
+  return it == tag_best_.end() ? std::nullopt : it->second;
+}
+
+std::optional<DesignResult> EvaluationLedger::least_infeasible_of_tag(std::size_t t) const {
+  const auto it = tag_least_.find(t);
+  return it == tag_least_.end() ? std::nullopt : it->second;
+}
+
+std::vector<std::string> EvaluationLedger::warnings() const {
+  std::vector<std::string> w = warnings_;
+  if (dropped_warnings_ > 0)
+    w.push_back("... and " + std::to_string(dropped_warnings_) + " more distinct model warnings");
+  return w;
+}
+
+void EvaluationLedger::append(const DesignEvaluation& d, const std::string& label, bool gradient_probe) {
+  record::RecordedEvaluation e;
+  e.phase = label;
+  e.x = d.x;
+  e.objectives = d.evaluation.objectives;
+  e.inequality = d.evaluation.inequality;
+  e.equality = d.evaluation.equality;
+  const auto& labels = base_.metric_labels();
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    if (d.metric_ok[i]) e.metrics.emplace_back(labels[i], d.metric_values[i]);
+  e.ok = d.evaluation.ok();
+  e.message = d.evaluation.message;
+  e.gradient_probe = gradient_probe;
+  e.seconds = std::isfinite(d.seconds) ? d.seconds : 0.0;
+  e.warnings = d.warnings;
+  store_->append(e);
+}
+
+void EvaluationLedger::add_warning(const std::string& w) {
+  if (!warning_set_.insert(w).second) return;
+  if (warnings_.size() < kMaxWarnings) {
+    warnings_.push_back(w);
+  } else {
+    ++dropped_warnings_;
+  }
+}
+
+// Best feasible (by the minimized objective 0, first wins ties), least
+// infeasible (smallest violation among ok designs) and the history.
+void EvaluationLedger::track(const DesignEvaluation& d, const std::string& label, bool ranks) {
+  const solvers::Evaluation& e = d.evaluation;
+  if (e.ok()) any_ok_ = true;
+  const bool has_objective = !spec_.objectives.empty();
+  if (ranks && e.ok()) {
+    if (solvers::is_feasible(e, spec_.solver.constraint_tolerance)) {
+      const double f = has_objective ? e.objectives[0] : 0.0;
+      if (!best_ || (has_objective && f < best_scaled_)) {
+        best_ = to_result(d, label);
+        best_scaled_ = f;
+        best_tag_ = tag_;
+      }
+      auto& tb = tag_best_[tag_];
+      if (!tb || (has_objective && f < tag_best_scaled_[tag_])) {
+        tb = to_result(d, label);
+        tag_best_scaled_[tag_] = f;
+      }
+    } else {
+      const double v = solvers::max_violation(e);
+      if (!least_ || v < least_->max_violation) least_ = to_result(d, label);
+      auto& tl = tag_least_[tag_];
+      if (!tl || v < tl->max_violation) tl = to_result(d, label);
+    }
+  }
+  const bool maximize = has_objective && spec_.objectives[0].maximize;
+  double h = maximize ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  if (best_ && has_objective) h = best_->objectives[0];
+  result_.best_history.push_back(h);
+}
+
+}  // namespace rackopt::study

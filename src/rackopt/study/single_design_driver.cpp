@@ -1,0 +1,45 @@
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/study/study_kind_drivers.hpp"
+
+namespace rackopt::study {
+
+std::string drive_single_design(const KindDriverContext& ctx, const std::optional<Obtained>& start) {
+  const StudySpec& spec = ctx.spec;
+  StudyProblem& base = ctx.base;
+  EvaluationLedger& ledger = ctx.ledger;
+  StudyResult& result = ledger.result();
+  const RunOptions& options = ctx.options;
+  std::string status;
+  if (!start) return "stopped";
+  result.best = ledger.to_result(start->design, "start");
+  status = start->design.evaluation.ok() ? "ok" : "all_failed";
+  if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok() && ledger.stop_requested()) {
+    status = "stopped";  // the reliability analysis did not run
+  } else if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok()) {
+    try {
+      const Drive design = base.drive_at(start->design.x);
+      WearReliabilityOptions wo = wear_reliability_options(design);
+      wo.samples = spec.metric_options.reliability_samples;
+      wo.seed = spec.metric_options.reliability_seed;
+      wo.threads = ledger.threads();
+      if (spec.metric_options.bootstrap_replicates > 0)
+        wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
+      wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
+      // Everything recorded is committed; the analysis itself is not
+      // recorded (--resume redoes it): Ctrl-C may end it at once.
+      ledger.store().flush();
+      const ImmediateStopScope immediate;
+      result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
+    } catch (const Interrupted&) {
+      ledger.stop_requested();  // latch: the study stopped; --resume redoes the Monte Carlo
+      status = "stopped";
+    } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
+      status = "all_failed";
+      result.solver_message = std::string("wear reliability: ") + e.what();
+    }
+  }
+  return status;
+}
+
+}  // namespace rackopt::study

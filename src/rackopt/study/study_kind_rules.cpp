@@ -1,0 +1,179 @@
+#include "rackopt/study/study_kind_rules.hpp"
+
+#include <vector>
+
+#include "rackopt/core/text.hpp"
+#include "rackopt/units/units.hpp"
+
+namespace rackopt::study {
+
+namespace {
+
+std::optional<StudyRuleViolation> violation(StudyRulePart part, std::string message, std::size_t variable = 0) {
+  return StudyRuleViolation{part, variable, std::move(message)};
+}
+
+std::optional<StudyRuleViolation> objective_count(const StudySpec& spec) {
+  const std::size_t n = spec.objectives.size();
+  if (spec.kind == StudyKind::kOptimize && n != 1)
+    return violation(StudyRulePart::kObjectives,
+                     "an optimize study needs exactly one objective, found " + std::to_string(n) +
+                         (n > 1 ? " (for 2 or 3 objectives use kind: pareto; or turn the others into constraints)"
+                                : " (e.g. objectives: [stiffness_fluctuation])"));
+  if (spec.kind == StudyKind::kPareto && (n < 2 || n > 3))
+    return violation(StudyRulePart::kObjectives, "a pareto study needs 2 or 3 objectives, found " + std::to_string(n) +
+                                                     (n < 2 ? " (for one objective use kind: optimize)" : ""));
+  return std::nullopt;
+}
+
+std::optional<StudyRuleViolation> variables_present(const StudySpec& spec) {
+  const bool needs = spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto ||
+                     spec.kind == StudyKind::kSweep;
+  if (!needs || !spec.variables.empty()) return std::nullopt;
+  return violation(StudyRulePart::kVariables, "a " + std::string(kind_name(spec.kind)) +
+                                                  " study needs at least one design variable, e.g. variables: "
+                                                  "{pinion.pressure_angle: [14 deg, 25 deg]}");
+}
+
+std::optional<StudyRuleViolation> one_design(const StudySpec& spec) {
+  if (spec.kind != StudyKind::kEvaluate && spec.kind != StudyKind::kReliability) return std::nullopt;
+  for (std::size_t i = 0; i < spec.variables.size(); ++i) {
+    if (spec.variables[i].start) continue;
+    return violation(StudyRulePart::kVariable,
+                     "an " + std::string(kind_name(spec.kind)) +
+                         " study computes one design: give start (e.g. {lower: ..., upper: ..., start: ...}) or a "
+                         "single value ({values: [...]})",
+                     i);
+  }
+  return std::nullopt;
+}
+
+std::optional<StudyRuleViolation> sweep_size(const StudySpec& spec) {
+  if (spec.kind != StudyKind::kSweep) return std::nullopt;
+  if (spec.sweep.method != SweepSpec::Method::kGrid) {
+    if (spec.sweep.points <= spec.sweep.max_points) return std::nullopt;
+    return violation(StudyRulePart::kSweepPoints, std::to_string(spec.sweep.points) +
+                                                      " points is more than sweep.max_points = " +
+                                                      std::to_string(spec.sweep.max_points) +
+                                                      "; lower points or raise max_points");
+  }
+  double total = 1;
+  std::vector<std::string> factors;
+  for (const auto& v : spec.variables) {
+    const std::size_t n =
+        v.discrete() ? v.values.size() : static_cast<std::size_t>(v.levels > 0 ? v.levels : spec.sweep.levels);
+    total *= static_cast<double>(n);
+    factors.push_back(v.key + " " + std::to_string(n));
+  }
+  if (total <= static_cast<double>(spec.sweep.max_points)) return std::nullopt;
+  return violation(StudyRulePart::kSweepGrid,
+                   "the grid has " + format_number(total, 12) + " points (" + join(factors, " x ") +
+                       "), more than sweep.max_points = " + std::to_string(spec.sweep.max_points) +
+                       "; lower the levels, use method: lhs or sobol with fewer points, or raise max_points");
+}
+
+bool enumerates_combinations(const StudySpec& spec) {
+  return spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto;
+}
+
+std::optional<StudyRuleViolation> discrete_combinations(const StudySpec& spec) {
+  if (!enumerates_combinations(spec)) return std::nullopt;
+  double combinations = 1;
+  std::vector<std::string> factors;
+  for (const auto& v : spec.variables) {
+    if (!v.discrete()) continue;
+    combinations *= static_cast<double>(v.values.size());
+    factors.push_back(v.key + " (" + std::to_string(v.values.size()) + " values)");
+  }
+  if (combinations <= static_cast<double>(spec.max_discrete_combinations)) return std::nullopt;
+  return violation(StudyRulePart::kVariables,
+                   "the discrete variables " + join(factors, " x ") + " make " + format_number(combinations, 12) +
+                       " combinations, each optimized separately; more than limits.max_discrete_combinations = " +
+                       std::to_string(spec.max_discrete_combinations) +
+                       "; drop values, make a variable continuous, or raise the limit");
+}
+
+StudyRulePart part_of(solvers::SolverSetting s, const solvers::SolverSettings& settings) {
+  switch (s) {
+    case solvers::SolverSetting::kLibrary: return StudyRulePart::kSolverLibrary;
+    case solvers::SolverSetting::kLocalAlgorithm: return StudyRulePart::kSolverLocalAlgorithm;
+    case solvers::SolverSetting::kAlgorithm:
+    case solvers::SolverSetting::kNumbers:
+    case solvers::SolverSetting::kProblem: break;
+  }
+  // Ipopt has no algorithm setting: whatever it refuses is about the library.
+  return lower(settings.library) == "ipopt" ? StudyRulePart::kSolverLibrary : StudyRulePart::kSolverAlgorithm;
+}
+
+std::optional<StudyRuleViolation> solver_can_run(const StudySpec& spec) {
+  if (!enumerates_combinations(spec)) return std::nullopt;
+  const solvers::ProblemShape shape = solver_problem_shape(spec);
+  // Every variable discrete: the enumeration is the optimization, no solver runs.
+  if (shape.dimension == 0) return std::nullopt;
+  if (auto r = solvers::check_solver_settings(spec.solver, shape))
+    return violation(part_of(r->setting, spec.solver), r->message);
+  if (spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kEpsilonConstraint) {
+    const std::size_t bounds = spec.objectives.size() - 1;
+    solvers::ProblemShape eps = shape;
+    eps.inequality += bounds;
+    if (auto r = solvers::check_solver_settings(spec.solver, eps))
+      return violation(StudyRulePart::kParetoMethod,
+                       "the eps_constraint method bounds the other " + std::to_string(bounds) +
+                           " objective(s) by inequality constraints: " + r->message +
+                           "; or use pareto method: weighted_sum (convex parts of the front only)");
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string to_string(StudyRulePart part) {
+  switch (part) {
+    case StudyRulePart::kObjectives: return "objectives";
+    case StudyRulePart::kVariables: return "variables";
+    case StudyRulePart::kVariable: return "variable";
+    case StudyRulePart::kSweepGrid: return "sweep grid";
+    case StudyRulePart::kSweepPoints: return "sweep points";
+    case StudyRulePart::kSolverLibrary: return "solver library";
+    case StudyRulePart::kSolverAlgorithm: return "solver algorithm";
+    case StudyRulePart::kSolverLocalAlgorithm: return "solver local algorithm";
+    case StudyRulePart::kParetoMethod: return "pareto method";
+  }
+  return "?";
+}
+
+std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec& spec) {
+  switch (violation.part) {
+    case StudyRulePart::kObjectives: return "objectives";
+    case StudyRulePart::kVariables: return "variables";
+    case StudyRulePart::kVariable:
+      return violation.variable < spec.variables.size() ? "variables." + spec.variables[violation.variable].key
+                                                        : "variables";
+    case StudyRulePart::kSweepGrid: return "sweep.levels";
+    case StudyRulePart::kSweepPoints: return "sweep.points";
+    case StudyRulePart::kSolverLibrary: return "solver.library";
+    case StudyRulePart::kSolverAlgorithm: return "solver.algorithm";
+    case StudyRulePart::kSolverLocalAlgorithm: return "solver.local_algorithm";
+    case StudyRulePart::kParetoMethod: return "pareto.method";
+  }
+  return "study";
+}
+
+solvers::ProblemShape solver_problem_shape(const StudySpec& spec) {
+  solvers::ProblemShape shape;
+  for (const auto& v : spec.variables)
+    if (!v.discrete()) ++shape.dimension;
+  for (const auto& c : spec.constraints) {
+    shape.inequality += (c.min ? 1 : 0) + (c.max ? 1 : 0);
+    shape.equality += c.equals ? 1 : 0;
+  }
+  return shape;
+}
+
+std::optional<StudyRuleViolation> check_study_kind_rules(const StudySpec& spec) {
+  for (auto rule : {objective_count, variables_present, one_design, sweep_size, discrete_combinations, solver_can_run})
+    if (auto v = rule(spec)) return v;
+  return std::nullopt;
+}
+
+}  // namespace rackopt::study
