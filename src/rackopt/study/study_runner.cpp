@@ -20,6 +20,7 @@
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/best_design_curve.hpp"
 #include "rackopt/study/fe_verification.hpp"
 #include "rackopt/study/fidelity_settings.hpp"
 #include "rackopt/study/study_problem.hpp"
@@ -785,6 +786,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
       // An ok design has a drive; nothing to plot otherwise.
     }
   }
+  attach_best_design_curve(spec, result);
   result.status = status;
   result.warnings = run.warnings();
   try {
