@@ -1,3 +1,4 @@
+// status_message, declared with its contract in study_report.hpp.
 #include <string>
 
 #include "rackopt/report/display_units.hpp"
@@ -5,7 +6,6 @@
 #include "rackopt/report/study_report.hpp"
 
 namespace rackopt::study {
-
 
 std::string status_message(const StudySpec& spec, const StudyResult& r) {
   const std::string n = std::to_string(r.evaluations) + " evaluation" + (r.evaluations == 1 ? "" : "s");

@@ -1,3 +1,4 @@
+// study_summary_json, declared with its contract in study_report.hpp.
 #include <cmath>
 #include <optional>
 
@@ -14,6 +15,8 @@
 namespace rackopt::study {
 namespace {
 
+// One design as summary.json's best, least_infeasible, front and optimum
+// entries all show it, so a program reads every design the same way.
 void json_design(JsonWriter& j, const StudySpec& spec, const DesignResult& d, std::optional<bool> chosen) {
   j.begin_object();
   j.key("label").value(d.label);
