@@ -8,10 +8,10 @@
 
 #include "cli.hpp"
 #include "rackopt/core/interrupt.hpp"
-#include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/geometry/pressure_angle_range.hpp"
+#include "rackopt/output/stiffness_files.hpp"
 #include "rackopt/output/stiffness_report.hpp"
 #include "rackopt/units/units.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -79,18 +79,19 @@ int cmd_stiffness(const Args& a) {
 
   rackopt::throw_if_stop_requested("stiffness");
 
-  const fs::path csv = dir / "stiffness.csv";
-  rackopt::write_file_atomic(csv.string(), rackopt::stiffness_csv(curve));
   const std::string title = (drive.name.empty() ? fs::path(a.file).stem().string() : drive.name);
-  rackopt::write_file_atomic((dir / "stiffness.gp").string(),
-                             rackopt::stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
-  const std::string png = render_plot(dir, "stiffness.gp", "stiffness.png", curve.warnings);
+  const rackopt::WrittenFiles files = rackopt::write_stiffness_files(curve, dir.string(), title);
+  // A plot that was not drawn is one of the curve's warnings here: the text
+  // and the JSON list the curve's warnings.
+  curve.warnings.insert(curve.warnings.end(), files.warnings.begin(), files.warnings.end());
+  const std::string csv = files.path_of("stiffness_csv");
+  const std::string png = files.path_of("stiffness_png");
   rackopt::throw_if_stop_requested("stiffness");  // the CSV is complete; the plot was not drawn
   t.total_ms = ms_since(t0);
 
   std::string text = rackopt::geometry_summary(drive, model.geometry()) + rackopt::stiffness_summary(curve) +
                      rackopt::mesh_dynamics_summary(ripple, te);
-  text += "  wrote " + csv.string() + "\n";
+  text += "  wrote " + csv + "\n";
   text += png.empty() ? "  no plot (see warnings)\n" : "  plot  " + png + "\n";
   for (std::size_t i = model.warnings().size(); i < curve.warnings.size(); ++i) {
     text += "  warning: " + curve.warnings[i] + "\n";
@@ -98,7 +99,7 @@ int cmd_stiffness(const Args& a) {
   rackopt::set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;
-    std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, ripple, te, t, csv.string(), png) << "\n";
+    std::cout << rackopt::stiffness_json(drive, model.geometry(), curve, ripple, te, t, csv, png) << "\n";
   } else {
     std::cout << text;
   }

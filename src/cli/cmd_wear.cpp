@@ -9,10 +9,10 @@
 
 #include "cli.hpp"
 #include "rackopt/life/wear_reliability.hpp"
-#include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
+#include "rackopt/output/wear_files.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 
@@ -46,24 +46,9 @@ int cmd_wear(const Args& a) {
   throw_if_stop_requested("wear");
 
   const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;
-  WearFiles files;
-  std::vector<std::string> warnings;
-  files.wear_profile_csv = (dir / "wear_profile.csv").string();
-  write_file_atomic(files.wear_profile_csv, wear_profile_csv(r.nominal));
-  write_file_atomic((dir / "wear_profile.gp").string(), wear_profile_gnuplot(title));
-  files.wear_profile_png = render_plot(dir, "wear_profile.gp", "wear_profile.png", warnings);
-  if (!r.lives.empty()) {
-    files.life_samples_csv = (dir / "life_samples.csv").string();
-    write_file_atomic(files.life_samples_csv, life_samples_csv(r));
-    files.reliability_csv = (dir / "reliability.csv").string();
-    write_file_atomic(files.reliability_csv, reliability_csv(drive, r));
-    files.histogram_csv = (dir / "life_histogram.csv").string();
-    write_file_atomic(files.histogram_csv, life_histogram_csv(r));
-    write_file_atomic((dir / "life_histogram.gp").string(), life_histogram_gnuplot(title));
-    write_file_atomic((dir / "reliability.gp").string(), reliability_gnuplot(title));
-    files.histogram_png = render_plot(dir, "life_histogram.gp", "life_histogram.png", warnings);
-    files.reliability_png = render_plot(dir, "reliability.gp", "reliability.png", warnings);
-  }
+  const WrittenFiles written = write_wear_files(drive, r, dir.string(), title);
+  const WearFiles files = wear_files_by_role(written.listed);
+  const std::vector<std::string>& warnings = written.warnings;
   throw_if_stop_requested("wear");  // the CSVs are complete; the plots were not drawn
   const double total_ms = ms_since(t0);
 

@@ -2,8 +2,8 @@
 // each discrete combination, the binding constraints and variables at a
 // bound with the objective's sensitivities, the fidelity settings in effect,
 // and a sweep's global sensitivity ranking. Markdown for report.md and JSON
-// for summary.json; study_report.cpp places them. Nothing here runs a model:
-// the runner computed what is shown (StudyResult).
+// for summary.json; report_markdown.cpp and summary_json.cpp place them.
+// Nothing here runs a model: the runner computed what is shown (StudyResult).
 #pragma once
 
 #include <string>

@@ -53,9 +53,11 @@ struct StudyReport {
 // file atomically (write_file_atomic; PNGs through render_plot). Which files
 // depends on the kind (docs/output.md); plots only when spec.output.plots,
 // report.md only when spec.output.report, the stiffness curve only when
-// spec.output.stiffness_curve and result.best_drive is set. A plot gnuplot
-// cannot draw, or a stiffness curve the model refuses, is a warning, not an
-// error. Throws std::runtime_error only when a file cannot be written.
+// spec.output.stiffness_curve and the runner computed result.best_curve
+// (study/best_design_curve.hpp): the report runs no model. A plot gnuplot
+// cannot draw, or a stiffness curve the model refused
+// (result.best_curve_error), is a warning, not an error. Throws
+// std::runtime_error only when a file cannot be written.
 StudyReport write_study_report(const StudySpec& spec, const StudyResult& result, const std::string& out_dir);
 
 // The summary object (one JSON object, one line, SI values plus display

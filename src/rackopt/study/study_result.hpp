@@ -14,6 +14,7 @@
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 
@@ -67,6 +68,14 @@ struct StudyResult {
   // The drive of `best` (optimize/evaluate/reliability) or of the chosen
   // front point (pareto): the report writes and plots its stiffness curve.
   std::shared_ptr<const Drive> best_drive;
+  // The stiffness curve of best_drive, computed by the runner
+  // (best_design_curve.hpp) so that the report never runs a model. Empty
+  // unless spec.output.stiffness_curve is on and best_drive is set, and
+  // empty when the model refused the design: best_curve_error then holds
+  // the warning the report lists ("no stiffness curve of the best design
+  // (<code>): <message>").
+  std::shared_ptr<const StiffnessCurve> best_curve;
+  std::string best_curve_error;
   // reliability: the full wear reliability analysis of the design, for the
   // same CSVs and plots as `rackopt wear` (output/wear_report.hpp).
   std::shared_ptr<const WearReliabilityResult> reliability;

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/study/best_design_curve.hpp"
 #include "rackopt/study/evaluation_ledger.hpp"
 #include "rackopt/study/fe_verification.hpp"
 #include "rackopt/study/fidelity_settings.hpp"
@@ -127,6 +128,8 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   store.set_meta("status", ledger.stopped() ? "stopped" : "finished");
   store.set_meta("result_status", status);
   record::write_evaluations_csv(store, base.variable_keys(), base.metric_labels(), csv_path);
+  // After the record is complete: the curve is for the report only.
+  attach_best_design_curve(spec, result);
   verify_best_design_by_fe(spec, options, result);
   result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return result;

@@ -1,0 +1,32 @@
+#include "rackopt/output/stiffness_files.hpp"
+
+#include <filesystem>
+
+#include "rackopt/output/atomic_file.hpp"
+#include "rackopt/output/plot.hpp"
+#include "rackopt/output/stiffness_report.hpp"
+
+namespace rackopt {
+
+WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::string& out_dir, const std::string& title,
+                                   bool plots) {
+  namespace fs = std::filesystem;
+  const fs::path dir(out_dir.empty() ? std::string(".") : out_dir);
+  WrittenFiles files;
+  const std::string csv = (dir / "stiffness.csv").string();
+  write_file_atomic(csv, stiffness_csv(curve));
+  files.written.push_back(csv);
+  files.listed.emplace_back("stiffness_csv", csv);
+  if (!plots) return files;
+  const std::string script = (dir / "stiffness.gp").string();
+  write_file_atomic(script, stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
+  files.written.push_back(script);
+  const std::string png = render_plot(dir.string(), "stiffness.gp", "stiffness.png", files.warnings);
+  if (!png.empty()) {
+    files.written.push_back(png);
+    files.listed.emplace_back("stiffness_png", png);
+  }
+  return files;
+}
+
+}  // namespace rackopt
