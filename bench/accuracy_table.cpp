@@ -39,7 +39,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "rackopt/core/error.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/solvers/solver.hpp"
@@ -265,7 +265,7 @@ struct IntervalStats {
   bool one_sided = false; // some seed's interval unbounded on one side
 };
 
-void add_interval(IntervalStats& s, const rackopt::reliability::LifeInterval& li, double exact_s, int n_seeds) {
+void add_interval(IntervalStats& s, const rackopt::statistics::LifeInterval& li, double exact_s, int n_seeds) {
   if (!li.lower_bounded || !li.upper_bounded) s.one_sided = true;
   s.half_width += 0.5 * (li.upper - li.lower) / exact_s / n_seeds;
   const double e = std::abs(li.estimate - exact_s) / exact_s;
@@ -395,7 +395,7 @@ struct StudyOutcome {
 
 rackopt::study::StudySpec sizing_spec(bool ks_objective) {
   rackopt::study::StudySpec s =
-      rackopt::study::load_study_file(std::string(RACKOPT_SOURCE_DIR) + "/studies/rack_railway_sizing.yaml");
+      rackopt::studyfile::load_study_file(std::string(RACKOPT_SOURCE_DIR) + "/studies/rack_railway_sizing.yaml");
   if (ks_objective) {
     s.objectives[0].metric =
         rackopt::metrics::resolve_request(rackopt::metrics::parse_metric_request("stiffness_fluctuation_ks"));

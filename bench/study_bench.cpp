@@ -47,7 +47,7 @@ st::StudySpec sizing_spec(int positions_per_period, bool stiffness_only) {
   std::vector<std::string> overrides;
   if (positions_per_period > 0)
     overrides.push_back("problem.numerics.positions_per_period=" + std::to_string(positions_per_period));
-  st::StudySpec s = st::load_study_file(kStudies + "rack_railway_sizing.yaml", overrides);
+  st::StudySpec s = rackopt::studyfile::load_study_file(kStudies + "rack_railway_sizing.yaml", overrides);
   if (stiffness_only) {
     auto stress = [](const std::string& label) { return label.find("safety") != std::string::npos ||
                                                         label.find("stress") != std::string::npos; };
@@ -179,7 +179,7 @@ BENCHMARK(BM_SizingStiffnessCurve)->Unit(benchmark::kMillisecond);
 // exact quantile map, wear_life, stiffness, stresses); 1: the same without
 // the two wear metrics, so the difference is the wear model's share.
 void BM_ShipLiftEvaluate(benchmark::State& state) {
-  st::StudySpec spec = st::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml");
+  st::StudySpec spec = rackopt::studyfile::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml");
   if (state.range(0) != 0) {
     auto wear = [](const std::string& label) { return label.rfind("wear_life", 0) == 0; };
     std::erase_if(spec.objectives, [&](const st::ObjectiveSpec& o) { return wear(o.label); });
@@ -236,7 +236,7 @@ void run_whole_study(benchmark::State& state, const st::StudySpec& spec, unsigne
 // one whole design evaluation of the study (stresses, contact ratio, wear
 // life at R by its exact quantile, the size metrics).
 void BM_GantryMetrics(benchmark::State& state) {
-  const st::StudySpec spec = st::load_study_file(kStudies + "gantry_sizing.yaml");
+  const st::StudySpec spec = rackopt::studyfile::load_study_file(kStudies + "gantry_sizing.yaml");
   const st::StudyProblem base(spec);
   const rackopt::Drive drive = base.drive_at(base.start_design());
   std::vector<rackopt::metrics::MetricRequest> q;
@@ -277,7 +277,7 @@ BENCHMARK(BM_SizingStudy)->Unit(benchmark::kMillisecond)->UseRealTime();
 // Arg: threads given to run_study. About 10 s per run: one iteration per
 // repetition.
 void BM_ShipLiftPareto(benchmark::State& state) {
-  const st::StudySpec spec = st::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml");
+  const st::StudySpec spec = rackopt::studyfile::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml");
   run_whole_study(state, spec, static_cast<unsigned>(state.range(0)), "pareto");
 }
 BENCHMARK(BM_ShipLiftPareto)

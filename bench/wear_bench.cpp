@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
-#include "rackopt/reliability/goodness_of_fit.hpp"
-#include "rackopt/reliability/reliability.hpp"
-#include "rackopt/reliability/sampling.hpp"
+#include "rackopt/statistics/goodness_of_fit.hpp"
+#include "rackopt/statistics/reliability.hpp"
+#include "rackopt/statistics/sampling.hpp"
 #include "rackopt/wear/wear_life.hpp"
 
 namespace {
@@ -145,12 +145,12 @@ const std::vector<double>& lives_seconds(long n) {
 // Arguments: samples (1000 or 10000), bootstrap replicates (200 = default, 20 = the minimum).
 void BM_SummarizeLives(benchmark::State& state) {
   const std::vector<double>& lives = lives_seconds(state.range(0));
-  rackopt::reliability::ReliabilityRequest req;
+  rackopt::statistics::ReliabilityRequest req;
   req.reliabilities = {0.9, 0.95, 0.99};
   req.bootstrap_replicates = static_cast<int>(state.range(1));
   req.threads = 1;
   for (auto _ : state) {
-    const auto s = rackopt::reliability::summarize_lives(lives, req);
+    const auto s = rackopt::statistics::summarize_lives(lives, req);
     benchmark::DoNotOptimize(s.life.data());
   }
 }
@@ -170,9 +170,9 @@ void BM_EmpiricalAndOneFit(benchmark::State& state) {
   std::vector<double> positive;
   std::copy_if(lives.begin(), lives.end(), std::back_inserter(positive), [](double x) { return x > 0; });
   for (auto _ : state) {
-    const auto e = rackopt::reliability::empirical_life_at_reliability(lives, 0.9);
-    const auto f = rackopt::reliability::fit_life_distribution(rackopt::reliability::Family::kLognormal, positive);
-    benchmark::DoNotOptimize(e.estimate + rackopt::reliability::life_at_reliability(f.distribution, 0.9));
+    const auto e = rackopt::statistics::empirical_life_at_reliability(lives, 0.9);
+    const auto f = rackopt::statistics::fit_life_distribution(rackopt::statistics::Family::kLognormal, positive);
+    benchmark::DoNotOptimize(e.estimate + rackopt::statistics::life_at_reliability(f.distribution, 0.9));
   }
 }
 BENCHMARK(BM_EmpiricalAndOneFit)->Unit(benchmark::kMicrosecond);
@@ -184,7 +184,7 @@ BENCHMARK(BM_EmpiricalAndOneFit)->Unit(benchmark::kMicrosecond);
 // seed-1 sample is accepted, and the decision with the seed the summary uses.
 // Reference: B = 20000. About 3 minutes on 2 threads.
 void ks_table() {
-  using namespace rackopt::reliability;
+  using namespace rackopt::statistics;
   const std::vector<double>& lives = lives_seconds(1000);
   std::vector<double> pos;
   for (double v : lives)

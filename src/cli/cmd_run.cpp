@@ -14,8 +14,8 @@
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/fe/ccx_runner.hpp"
 #include "rackopt/fe/gmsh_library.hpp"
-#include "rackopt/report/run_summary_text.hpp"
-#include "rackopt/report/study_report.hpp"
+#include "rackopt/study_report/run_summary_text.hpp"
+#include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
 
@@ -37,7 +37,7 @@ std::string folder_name(const std::string& name) {
 
 int cmd_run(const Args& a) {
   namespace fs = std::filesystem;
-  const study::StudySpec spec = study::load_study_file(a.file, a.overrides);
+  const study::StudySpec spec = studyfile::load_study_file(a.file, a.overrides);
   const std::string out_dir =
       a.out_dir.empty() ? (fs::path("out") / folder_name(spec.name)).string() : a.out_dir;
 
@@ -60,7 +60,7 @@ int cmd_run(const Args& a) {
   opt.progress = [&](const study::Progress& p) {
     std::string detail;
     if (!objective.empty()) {
-      detail = "best " + (p.best ? study::metric_display(objective, *p.best) : std::string("none feasible yet"));
+      detail = "best " + (p.best ? study_report::metric_display(objective, *p.best) : std::string("none feasible yet"));
     }
     if (p.failed > 0) detail += (detail.empty() ? "" : ", ") + std::to_string(p.failed) + " failed";
     if (!p.phase.empty()) detail += (detail.empty() ? "" : ", ") + p.phase;
@@ -69,9 +69,9 @@ int cmd_run(const Args& a) {
 
   const study::StudyResult result = study::run_study(spec, opt);
   bar->finish(result.status != "stopped");  // finish the progress line before anything else is printed
-  const study::StudyReport rep = study::write_study_report(spec, result, out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, result, out_dir);
 
-  const std::string text = study::study_summary_text(spec, result, rep, out_dir);
+  const std::string text = study_report::study_summary_text(spec, result, rep, out_dir);
   set_immediate_stop_output("");  // our own output follows
   if (a.json) {
     std::cerr << text;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"

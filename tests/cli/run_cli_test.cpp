@@ -146,7 +146,7 @@ std::string write_sweep_study(const std::string& dir) {
 
 // Every x of the store, checked for repeats through the record API.
 void expect_store_complete(const std::string& study_file, const std::string& out_dir) {
-  const rackopt::study::StudySpec spec = rackopt::study::load_study_file(study_file);
+  const rackopt::study::StudySpec spec = rackopt::studyfile::load_study_file(study_file);
   std::vector<std::string> names;
   for (const auto& v : spec.variables) names.push_back(v.key);
   auto store = rackopt::record::EvaluationStore::open(out_dir + "/evaluations.sqlite",

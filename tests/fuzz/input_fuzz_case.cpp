@@ -63,7 +63,7 @@ void run_input_fuzz_case(std::string_view data, const std::string& studies_dir) 
 
   refused_or_ok([&] { exercise_geometry(load_problem_text(text, "fuzz.yaml", overrides)); });
   refused_or_ok([&] { exercise_geometry(load_problem_text(kSmallProblem, "small.yaml", {first_line})); });
-  refused_or_ok([&] { study::load_study_text(text, "fuzz_study.yaml", studies_dir, overrides); });
+  refused_or_ok([&] { studyfile::load_study_text(text, "fuzz_study.yaml", studies_dir, overrides); });
 }
 
 }  // namespace rackopt::fuzz

@@ -14,7 +14,7 @@
 #include "metrics_test_support.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/metrics/ks_aggregate.hpp"
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/problem/problem_loader.hpp"
@@ -167,7 +167,7 @@ TEST(EvaluateMetrics, WearLifeAtRExactPathInsideMonteCarloIntervalAndFallsWithR)
   const MetricValues v = eval(d, {"wear_life_at_R(0.5)", "wear_life_at_R(0.9)", "wear_life_at_R(0.99)"});
   ASSERT_TRUE(v.all_ok());
   for (std::size_t i = 0; i < 3; ++i) {
-    const reliability::LifeInterval& e = mc.summary.life[i].empirical;
+    const statistics::LifeInterval& e = mc.summary.life[i].empirical;
     if (e.lower_bounded) {
       EXPECT_GE(v.values[i].value, e.lower * (1 - 1e-9)) << v.values[i].label;
     }

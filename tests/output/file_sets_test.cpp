@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/output/stiffness_files.hpp"
 #include "rackopt/output/wear_files.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"

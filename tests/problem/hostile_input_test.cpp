@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "problem_test_support.hpp"
-#include "rackopt/problem/input_file.hpp"
-#include "rackopt/problem/input_limits.hpp"
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/input_file.hpp"
+#include "rackopt/marked_yaml/input_limits.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/units/units.hpp"
 

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "rackopt/report/study_report.hpp"
+#include "rackopt/study_report/study_report.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "study_test_support.hpp"
 
@@ -84,7 +84,7 @@ TEST(FeVerification, TheBestDesignIsComparedAfterTheStudyAndReported) {
   // The design compared is the study's: 16 deg, not the problem's 14.
   EXPECT_NEAR(r.best_drive->pinion.pressure_angle, 16 * kDeg, 1e-12);
 
-  const StudyReport rep = write_study_report(spec, r, o.out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   const std::string md = slurp(o.out_dir + "/report.md");
   EXPECT_NE(md.find("## FE verification of the optimum"), std::string::npos);
   EXPECT_NE(md.find("| X [m] | K FE [MN/m]"), std::string::npos);
@@ -110,7 +110,7 @@ TEST(FeVerification, AFailedSolveIsReportedAndTheStudyKeepsItsResults) {
   EXPECT_FALSE(r.fe_verification);
   EXPECT_NE(r.fe_verification_error.find("no convergence"), std::string::npos) << r.fe_verification_error;
   EXPECT_NE(r.fe_verification_error.find("/tmp/rackopt-ccx-abc/job.inp"), std::string::npos);
-  const StudyReport rep = write_study_report(spec, r, o.out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   const std::string md = slurp(o.out_dir + "/report.md");
   EXPECT_NE(md.find("was not verified by FE: FE solve failed: *ERROR in contact"), std::string::npos) << md;
   EXPECT_NE(rep.summary_json.find("\"ok\":false,\"error\":\"FE solve failed"), std::string::npos);
@@ -131,7 +131,7 @@ TEST(FeVerification, NothingWithoutVerifyAndNoSolveWithoutADesign) {
   const StudyResult r = run_study(spec, o);
   EXPECT_FALSE(r.fe_verification);
   EXPECT_TRUE(r.fe_verification_error.empty());
-  const StudyReport rep = write_study_report(spec, r, o.out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   EXPECT_EQ(slurp(o.out_dir + "/report.md").find("FE verification"), std::string::npos);
   EXPECT_EQ(rep.summary_json.find("fe_verification"), std::string::npos);
 

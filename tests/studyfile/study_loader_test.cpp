@@ -70,7 +70,7 @@ TEST(StudyLoader, ShippedStudiesLoad) {
                            "ship_lift_reliability.yaml"}) {
     SCOPED_TRACE(name);
     StudySpec s;
-    ASSERT_NO_THROW(s = load_study_file(kStudies + "/" + name)) << name;
+    ASSERT_NO_THROW(s = studyfile::load_study_file(kStudies + "/" + name)) << name;
     EXPECT_FALSE(s.name.empty());
     EXPECT_FALSE(s.variables.empty());
     EXPECT_FALSE(s.all_metrics().empty());
@@ -78,7 +78,7 @@ TEST(StudyLoader, ShippedStudiesLoad) {
 }
 
 TEST(StudyLoader, RailwaySizingContent) {
-  const StudySpec s = load_study_file(kStudies + "/rack_railway_sizing.yaml");
+  const StudySpec s = studyfile::load_study_file(kStudies + "/rack_railway_sizing.yaml");
   EXPECT_EQ(s.kind, StudyKind::kOptimize);
   ASSERT_EQ(s.objectives.size(), 1u);
   EXPECT_EQ(s.objectives[0].label, "stiffness_fluctuation");
@@ -93,7 +93,7 @@ TEST(StudyLoader, RailwaySizingContent) {
 }
 
 TEST(StudyLoader, ShipLiftSwitchesTheRackToACaseHardenedProfile) {
-  const StudySpec s = load_study_file(kStudies + "/ship_lift_wear_tradeoff.yaml");
+  const StudySpec s = studyfile::load_study_file(kStudies + "/ship_lift_wear_tradeoff.yaml");
   EXPECT_EQ(s.kind, StudyKind::kPareto);
   ASSERT_EQ(s.objectives.size(), 3u);
   EXPECT_TRUE(s.objectives[0].maximize);
@@ -107,7 +107,7 @@ TEST(StudyLoader, ShipLiftSwitchesTheRackToACaseHardenedProfile) {
 }
 
 TEST(StudyLoader, SpallSweepDeclaresItsFault) {
-  const StudySpec s = load_study_file(kStudies + "/spall_severity_sweep.yaml");
+  const StudySpec s = studyfile::load_study_file(kStudies + "/spall_severity_sweep.yaml");
   EXPECT_EQ(s.kind, StudyKind::kSweep);
   EXPECT_EQ(s.sweep.method, SweepSpec::Method::kGrid);
   ASSERT_EQ(s.variables.size(), 3u);
@@ -556,7 +556,7 @@ TEST(StudyLoaderErrors, ProblemSetErrorsPointAtTheStudyFile) {
 
 TEST(StudyLoaderErrors, FileErrors) {
   try {
-    (void)load_study_file(kStudies + "/does_not_exist.yaml");
+    (void)studyfile::load_study_file(kStudies + "/does_not_exist.yaml");
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cannot open the study file"), std::string::npos) << e.what();

@@ -14,7 +14,7 @@ inline const std::string kStudies = std::string(RACKOPT_SOURCE_DIR) + "/studies"
 
 // Loads the study `text` as "t.yaml" in studies/ with `overrides`.
 inline study::StudySpec load(const std::string& text, const std::vector<std::string>& overrides = {}) {
-  return study::load_study_text(text, "t.yaml", kStudies, overrides);
+  return studyfile::load_study_text(text, "t.yaml", kStudies, overrides);
 }
 
 }  // namespace rackopt::test

@@ -15,7 +15,7 @@
 #include <iterator>
 #include <string>
 
-#include "rackopt/report/study_report.hpp"
+#include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
 
@@ -37,12 +37,12 @@ solver: {algorithm: LN_COBYLA, max_evaluations: 200, xtol_rel: 1e-8}
 
 TEST(OptimumExplanation, MultiplierOfALinearCostIsThePriceOfTheConstrainedQuantity) {
   const std::string problems = std::string(RACKOPT_SOURCE_DIR) + "/problems";
-  const StudySpec spec = load_study_text(kStudy, "explain.yaml", problems);
+  const StudySpec spec = studyfile::load_study_text(kStudy, "explain.yaml", problems);
   RunOptions o;
   o.out_dir = (std::filesystem::temp_directory_path() / ("rackopt_explain_" + std::to_string(::getpid()))).string();
   std::filesystem::remove_all(o.out_dir);
   const StudyResult r = run_study(spec, o);
-  const StudyReport rep = write_study_report(spec, r, o.out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   std::ifstream md_file(o.out_dir + "/report.md");
   const std::string md((std::istreambuf_iterator<char>(md_file)), std::istreambuf_iterator<char>());
   std::filesystem::remove_all(o.out_dir);
@@ -96,12 +96,12 @@ TEST(OptimumExplanation, SweepReportRanksTheVariables) {
   std::string text = kStudy;
   text.replace(text.find("kind: optimize"), 14, "kind: sweep");
   text += "sweep: {method: grid, levels: 4}\n";
-  const StudySpec spec = load_study_text(text, "sweep.yaml", std::string(RACKOPT_SOURCE_DIR) + "/problems");
+  const StudySpec spec = studyfile::load_study_text(text, "sweep.yaml", std::string(RACKOPT_SOURCE_DIR) + "/problems");
   RunOptions o;
   o.out_dir = (std::filesystem::temp_directory_path() / ("rackopt_explain_sweep_" + std::to_string(::getpid()))).string();
   std::filesystem::remove_all(o.out_dir);
   const StudyResult r = run_study(spec, o);
-  const StudyReport rep = write_study_report(spec, r, o.out_dir);
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   std::ifstream md_file(o.out_dir + "/report.md");
   const std::string md((std::istreambuf_iterator<char>(md_file)), std::istreambuf_iterator<char>());
   std::filesystem::remove_all(o.out_dir);

@@ -136,7 +136,7 @@ std::size_t variable_index(const StudySpec& spec, const std::string& key) {
 const std::vector<std::string> kCoarser = {"problem.numerics.positions_per_period=24"};
 
 TEST(StudyAcceptance, RailwaySizingBeatsADenseGridAndRepeatsBitForBit) {
-  const StudySpec spec = load_study_file(kStudies + "rack_railway_sizing.yaml", kCoarser);
+  const StudySpec spec = studyfile::load_study_file(kStudies + "rack_railway_sizing.yaml", kCoarser);
   ASSERT_EQ(spec.kind, StudyKind::kOptimize);
   ASSERT_EQ(spec.objectives.size(), 1u);
   ASSERT_FALSE(spec.objectives[0].maximize);
@@ -236,7 +236,7 @@ bool dominates_min(const std::vector<double>& a, const std::vector<double>& b) {
 TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   // The shipped study with a smaller budget: 7 points (3 anchors and a 2 x 2
   // eps grid per module value), 15 evaluations per sub-problem.
-  const StudySpec spec = load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml",
+  const StudySpec spec = studyfile::load_study_file(kStudies + "ship_lift_wear_tradeoff.yaml",
                                          {"pareto.points=7", "solver.max_evaluations=15"});
   ASSERT_EQ(spec.kind, StudyKind::kPareto);
   ASSERT_EQ(spec.objectives.size(), 3u);
@@ -330,7 +330,7 @@ namespace {
 // module (a grid over its face width and pressure angle at the cheapest
 // support spacing) may be both feasible and cheaper.
 TEST(StudyAcceptance, GantrySizingLandsOnASmallModuleThatTheNextSmallerCannotUndercut) {
-  const StudySpec spec = load_study_file(kStudies + "gantry_sizing.yaml");
+  const StudySpec spec = studyfile::load_study_file(kStudies + "gantry_sizing.yaml");
   const StudyResult a = run_study(spec, options_in(fresh_dir("gantry"), 1));
   ASSERT_TRUE(a.best && a.best->feasible) << a.status;
   const std::size_t im = variable_index(spec, "pinion.module");

@@ -340,7 +340,7 @@ TEST(ProfileRelief, RackRailwayHasAnOptimalReliefInsideASensibleRange) {
 // re-evaluated here from the problem file with the design's values.
 TEST(ProfileRelief, ShippedStudyFlattensTheTransmissionError) {
   study::StudySpec spec =
-      study::load_study_file(std::string(RACKOPT_SOURCE_DIR) + "/studies/rack_railway_tip_relief.yaml");
+      studyfile::load_study_file(std::string(RACKOPT_SOURCE_DIR) + "/studies/rack_railway_tip_relief.yaml");
   // As railway(): the relief on the papers' tooth model.
   spec.problem_overrides.insert(spec.problem_overrides.end(), kPaperToothModel.begin(), kPaperToothModel.end());
   study::RunOptions o;

@@ -12,7 +12,7 @@
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/metrics/model_results.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -285,10 +285,10 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
                                (r.exact.failed_at_start >= 1.0 ? " (every sample fails at once: no life at any R)"
                                                                 : ""));
         } else {
-          const reliability::LifeAtReliability& la = r.summary.life.at(k);
+          const statistics::LifeAtReliability& la = r.summary.life.at(k);
           const std::string n = std::to_string(r.summary.samples_total);
           if (la.fit) {
-            const reliability::CandidateFit* cf = r.summary.chosen_fit();
+            const statistics::CandidateFit* cf = r.summary.chosen_fit();
             rel.life_s.push_back(la.fit->estimate);
             rel.remark.push_back("Monte Carlo, " + n + " samples, fitted " +
                                  (cf ? cf->fit->distribution.describe() : std::string()) +

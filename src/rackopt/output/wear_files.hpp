@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/output/written_files.hpp"
 

@@ -19,12 +19,12 @@ std::string g(double v, const char* f = "%.9g") {
 
 const char* member_name(Member m) { return m == Member::kPinion ? "pinion" : "rack"; }
 
-const char* status_name(reliability::SampleResult::Status s) {
+const char* status_name(statistics::SampleResult::Status s) {
   switch (s) {
-    case reliability::SampleResult::Status::kOk: return "ok";
-    case reliability::SampleResult::Status::kDesignError: return "design_error";
-    case reliability::SampleResult::Status::kInputError: return "input_error";
-    case reliability::SampleResult::Status::kFailed: return "failed";
+    case statistics::SampleResult::Status::kOk: return "ok";
+    case statistics::SampleResult::Status::kDesignError: return "design_error";
+    case statistics::SampleResult::Status::kInputError: return "input_error";
+    case statistics::SampleResult::Status::kFailed: return "failed";
   }
   return "failed";
 }
@@ -37,8 +37,8 @@ std::vector<double> ok_lives_years(const WearReliabilityResult& r) {
   return v;
 }
 
-const reliability::Distribution* chosen_distribution(const WearReliabilityResult& r) {
-  const reliability::CandidateFit* c = r.summary.chosen_fit();
+const statistics::Distribution* chosen_distribution(const WearReliabilityResult& r) {
+  const statistics::CandidateFit* c = r.summary.chosen_fit();
   return (c && c->fit) ? &c->fit->distribution : nullptr;
 }
 
@@ -89,7 +89,7 @@ std::string reliability_csv(const Drive& drive, const WearReliabilityResult& r) 
   }
   for (double t : drive.reliability.times) grid.push_back(t / kSecondsPerYear);
   std::sort(grid.begin(), grid.end());
-  const reliability::Distribution* d = chosen_distribution(r);
+  const statistics::Distribution* d = chosen_distribution(r);
   std::vector<double> lives_s;
   for (const auto& s : r.lives) {
     if (s.ok()) lives_s.push_back(s.value);
@@ -103,8 +103,8 @@ std::string reliability_csv(const Drive& drive, const WearReliabilityResult& r) 
   std::string out = "t_years,R_fit,R_empirical\n";
   for (double t : grid) {
     const double ts = t * kSecondsPerYear;
-    out += g(t) + "," + (d ? g((1.0 - p0) * reliability::reliability_at(*d, ts)) : std::string("")) + "," +
-           (lives_s.empty() ? std::string("") : g(reliability::empirical_reliability(lives_s, ts))) + "\n";
+    out += g(t) + "," + (d ? g((1.0 - p0) * statistics::reliability_at(*d, ts)) : std::string("")) + "," +
+           (lives_s.empty() ? std::string("") : g(statistics::empirical_reliability(lives_s, ts))) + "\n";
   }
   return out;
 }
@@ -121,7 +121,7 @@ std::string life_histogram_csv(const WearReliabilityResult& r, int bins) {
     const int b = std::min(bins - 1, static_cast<int>((v - lo) / w));
     ++count[static_cast<std::size_t>(b)];
   }
-  const reliability::Distribution* d = chosen_distribution(r);
+  const statistics::Distribution* d = chosen_distribution(r);
   const double n = static_cast<double>(lives.size());
   for (int b = 0; b < bins; ++b) {
     const double a = lo + b * w, c = a + w;
@@ -189,7 +189,7 @@ std::string wear_summary(const Drive& d, const WearReliabilityResult& r) {
     o << "  Monte Carlo: " << r.lives.size() << " samples (" << (d.reliability.sobol ? "Sobol" : "pseudo-random")
       << ", seed " << r.seed_used << ", " << r.threads_used << " threads), " << s.failed_evaluations
       << " failed evaluations, " << s.immediate_failures << " immediate failures\n";
-    if (const reliability::CandidateFit* c = s.chosen_fit()) {
+    if (const statistics::CandidateFit* c = s.chosen_fit()) {
       o << "    life distribution: " << c->fit->distribution.describe() << " (s), KS D = "
         << g(c->ks.statistic, "%.4f") << " vs critical " << g(c->ks.critical_value, "%.4f") << " at "
         << d.reliability.ks_level << ": " << (c->ks.accepted ? "accepted" : "REJECTED") << "\n";
@@ -240,7 +240,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("max_depth_s").value(n.max_depth_s);
   j.key("contact_ratio_initial").value(n.initial_contact_ratio);
   j.key("contact_ratio_final").value(n.final_contact_ratio);
-  const reliability::ReliabilitySummary& s = r.summary;
+  const statistics::ReliabilitySummary& s = r.summary;
   j.key("samples").value(static_cast<long>(r.lives.size()));
   if (!r.status.empty()) j.key("status").value(r.status);
   j.key("seed").value(static_cast<long>(r.seed_used));
@@ -275,9 +275,9 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   }
   j.end_array();
   j.key("fit");
-  if (const reliability::CandidateFit* c = s.chosen_fit()) {
+  if (const statistics::CandidateFit* c = s.chosen_fit()) {
     j.begin_object();
-    j.key("family").value(reliability::family_name(c->family));
+    j.key("family").value(statistics::family_name(c->family));
     j.key("first").value(c->fit->distribution.first());
     j.key("second").value(c->fit->distribution.second());
     j.key("description").value(c->fit->distribution.describe());
@@ -293,7 +293,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   }
   j.key("candidates").begin_array();
   for (const auto& c : s.candidates) {
-    j.begin_object().key("family").value(reliability::family_name(c.family));
+    j.begin_object().key("family").value(statistics::family_name(c.family));
     if (c.fit) {
       j.key("description").value(c.fit->distribution.describe());
       j.key("aic").value(c.fit->aic);

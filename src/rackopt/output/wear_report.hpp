@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 
 namespace rackopt {
 

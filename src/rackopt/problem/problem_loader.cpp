@@ -9,9 +9,9 @@
 #include <map>
 #include <sstream>
 
-#include "rackopt/problem/input_file.hpp"
-#include "rackopt/problem/marked_map.hpp"
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/input_file.hpp"
+#include "rackopt/marked_yaml/marked_map.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
 #include "rackopt/problem/random_input_reader.hpp"
 

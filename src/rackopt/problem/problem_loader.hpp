@@ -12,7 +12,7 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/core/error.hpp"
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt {

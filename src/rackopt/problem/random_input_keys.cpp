@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 
 namespace rackopt {
 namespace {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "rackopt/problem/marked_map.hpp"
+#include "rackopt/marked_yaml/marked_map.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt {

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "rackopt/core/drive.hpp"
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 
 namespace rackopt {
 

@@ -1,5 +1,5 @@
 #include "rackopt/core/interrupt.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 
 namespace rackopt::study {

@@ -13,7 +13,7 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
-#include "rackopt/life/wear_reliability.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"

@@ -17,10 +17,10 @@
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/design_point.hpp"
-#include "rackopt/problem/input_file.hpp"
+#include "rackopt/marked_yaml/input_file.hpp"
 #include "rackopt/core/suggest.hpp"
-#include "rackopt/problem/marked_map.hpp"
-#include "rackopt/problem/marked_tree.hpp"
+#include "rackopt/marked_yaml/marked_map.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
@@ -28,7 +28,10 @@
 #include "rackopt/units/units.hpp"
 #include "rackopt/core/text.hpp"
 
-namespace rackopt::study {
+namespace rackopt::studyfile {
+
+// The loaders fill the study layer's types throughout.
+using namespace rackopt::study;
 namespace {
 
 namespace fs = std::filesystem;
@@ -987,4 +990,4 @@ StudySpec load_study_file(const std::string& path, const std::vector<std::string
   return load_study_text(text, path, fs::path(path).parent_path().string(), overrides);
 }
 
-}  // namespace rackopt::study
+}  // namespace rackopt::studyfile

@@ -7,7 +7,7 @@
 
 #include "rackopt/study/study_spec.hpp"
 
-namespace rackopt::study {
+namespace rackopt::studyfile {
 
 // Reads and checks a study file. `overrides` are `--set` assignments:
 // "problem.<key>=value" is appended to problem_overrides (so any problem key
@@ -30,11 +30,11 @@ namespace rackopt::study {
 // of range, an unknown kind, solver settings check_solver_settings refuses
 // (message says what to use instead), too many objectives for the kind,
 // a sweep bigger than max_points, too many discrete combinations.
-StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
+study::StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Same, from text. `name_for_messages` is used in marks; relative problem
 // paths are resolved against `base_dir`.
-StudySpec load_study_text(const std::string& yaml_text, const std::string& name_for_messages,
+study::StudySpec load_study_text(const std::string& yaml_text, const std::string& name_for_messages,
                           const std::string& base_dir, const std::vector<std::string>& overrides = {});
 
-}  // namespace rackopt::study
+}  // namespace rackopt::studyfile

@@ -8,7 +8,10 @@
 #include "rackopt/units/units.hpp"
 #include "rackopt/core/text.hpp"
 
-namespace rackopt::study {
+namespace rackopt::studyfile {
+
+// The loaders fill the study layer's types throughout.
+using namespace rackopt::study;
 namespace {
 
 constexpr const char* kForms = "fe, or a map {method: fe, positions: 4, level: 0, extended_contact: off, rack_supports: off}";
@@ -52,4 +55,4 @@ std::optional<FeVerifySpec> read_verify_section(const MarkedMap& top) {
   return v;
 }
 
-}  // namespace rackopt::study
+}  // namespace rackopt::studyfile

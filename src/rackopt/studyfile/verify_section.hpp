@@ -5,16 +5,16 @@
 
 #include <optional>
 
-#include "rackopt/problem/marked_map.hpp"
+#include "rackopt/marked_yaml/marked_map.hpp"
 #include "rackopt/study/fe_verify_spec.hpp"
 
-namespace rackopt::study {
+namespace rackopt::studyfile {
 
 // nullopt when `top` has no verify key. Throws InputError at the value's
 // file:line:column naming the key ("verify.positions") for: a word other
 // than fe, a list, an unknown key (with "did you mean"), a method other
 // than fe, positions outside 1..64, a level outside 0..6, a switch that is
 // not on/off.
-std::optional<FeVerifySpec> read_verify_section(const MarkedMap& top);
+std::optional<study::FeVerifySpec> read_verify_section(const MarkedMap& top);
 
-}  // namespace rackopt::study
+}  // namespace rackopt::studyfile

@@ -1,0 +1,26 @@
+#include "rackopt/study_report/result_facts.hpp"
+
+#include <algorithm>
+
+namespace rackopt::study_report {
+
+// The report reads the study layer's results and settings throughout.
+using namespace rackopt::study;
+
+std::size_t feasible_points(const StudyResult& r) {
+  return static_cast<std::size_t>(std::count_if(r.sweep_points.begin(), r.sweep_points.end(),
+                                                [](const DesignResult& p) { return p.feasible; }));
+}
+
+std::size_t fresh_evaluations(const StudyResult& r) {
+  return r.evaluations >= r.reused_evaluations ? r.evaluations - r.reused_evaluations : 0;
+}
+
+std::vector<std::string> warnings_best_first(const StudyResult& r, const std::vector<std::string>& run_warnings) {
+  std::vector<std::string> out = r.best ? r.best->warnings : std::vector<std::string>{};
+  for (const auto& w : run_warnings)
+    if (std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  return out;
+}
+
+}  // namespace rackopt::study_report

@@ -1,0 +1,433 @@
+#include "rackopt/wear_reliability/wear_reliability.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <thread>
+
+#include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/progress_bar.hpp"
+#include "rackopt/wear_reliability/design_scatter.hpp"
+#include "rackopt/wear_reliability/life_at_R_check.hpp"
+#include "rackopt/wear_reliability/sample_domain.hpp"
+#include "rackopt/statistics/distribution.hpp"
+#include "rackopt/statistics/function_table.hpp"
+#include "rackopt/statistics/sampling.hpp"
+
+namespace rackopt {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Failure criteria as table tags (with the limiting member): the table never
+// interpolates across a change of either, i.e. across a kink of life(input).
+const char* const kCriteria[] = {"max_depth", "case_depth", "contact_ratio", "initial_contact_ratio",
+                                 "contact_ratio_above_max"};
+constexpr int kCriteriaCount = static_cast<int>(sizeof(kCriteria) / sizeof(kCriteria[0]));
+
+int criterion_tag(const WearLifeResult& r) {
+  int c = kCriteriaCount;  // unknown criterion: a tag of its own
+  for (int i = 0; i < kCriteriaCount; ++i)
+    if (r.criterion == kCriteria[i]) c = i;
+  return 2 * c + (r.limiting_member == Member::kRack ? 0 : 1);
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string criterion_of_tag(int tag) {
+  const int c = tag / 2;
+  return c < kCriteriaCount ? kCriteria[c] : std::string("other");
+}
+
+// The status of a Monte Carlo run and one summary warning per kind of failed sample
+// (docs/models/reliability.md, "Failed samples"): inputs outside their
+// domain (once per input, with the count), every sample failing at once, and
+// a life at R that is 0 because more than 1 - R of the samples fail at once.
+void failed_sample_warnings(const Drive& drive, const WearModel& model, WearReliabilityResult& out) {
+  const statistics::ReliabilitySummary& s = out.summary;
+  const std::size_t n = out.lives.size();
+  const std::string of_n = " of " + std::to_string(n) + " samples";
+  for (std::size_t k = 0; k < out.outside_domain_samples.size(); ++k) {
+    const std::size_t c = out.outside_domain_samples[k];
+    if (c == 0) continue;
+    const std::string& key = out.input_keys[k];
+    out.summary.warnings.push_back(
+        key + ": " + std::to_string(c) + of_n + " have a sampled value " +
+        (input_must_be_positive(key) ? "that is not positive or not finite" : "that is not finite") +
+        " (the distribution reaches outside the input's domain): they are not drives and are excluded as "
+        "failed evaluations; R(t) and the life at R are conditional on a valid sample" +
+        (input_must_be_positive(key) ? " (a lognormal keeps a positive input positive)" : ""));
+  }
+  const std::size_t evaluated = s.samples_total - s.failed_evaluations;
+  if (evaluated == 0) {
+    out.status = "no_valid_sample";
+    out.summary.warnings.push_back("no life at reliability R: none" + of_n +
+                           " could be evaluated, so there is no R(t) and no life at R");
+    return;
+  }
+  const std::string bounds = "contact ratio outside [" + num(std::max(1.0, drive.wear.min_contact_ratio)) + ", " +
+                             num(model.max_contact_ratio()) + "]";
+  if (s.immediate_failures == evaluated) {
+    out.status = "every_sample_fails_at_once";
+    out.summary.warnings.push_back("no life at reliability R: every evaluated sample (" + std::to_string(evaluated) + of_n +
+                           ") fails at once (life 0, " + bounds +
+                           "), so the life at every R is 0 and R(t) = 0");
+    return;
+  }
+  out.status = "ok";
+  if (s.immediate_failures == 0) return;
+  const double p0 = static_cast<double>(s.immediate_failures) / static_cast<double>(evaluated);
+  std::string unreachable;
+  for (double R : drive.reliability.reliabilities) {
+    if (p0 > 1.0 - R) unreachable += (unreachable.empty() ? "" : ", ") + num(R);
+  }
+  if (!unreachable.empty()) {
+    out.summary.warnings.push_back("life at R = " + unreachable + " is 0: " + std::to_string(s.immediate_failures) + " of " +
+                           std::to_string(evaluated) + " evaluated samples fail at once (" + bounds +
+                           "), more than 1 - R");
+  }
+}
+
+}  // namespace
+
+WearSample wear_sample_for(const Drive& d, const std::vector<RandomInput>& inputs, const std::vector<double>& x) {
+  WearSample s;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const std::string& key = inputs[i].key;
+    const double v = x[i];
+    if (key == "contact_ratio") {
+      s.contact_ratio = v;  // any finite value, 0 included: out of range fails at once
+    } else if (key == "wear.coefficient") {
+      s.wear_coefficient_scale = v / d.wear.coefficient;
+    } else if (key == "load") {
+      s.force_scale = v / d.load.force;
+    } else if (key == "surface_hardness") {
+      s.surface_hardness_scale = v / design_value(d, key, 0.0);
+    } else {
+      throw InputError({d.source_file, 0, 0}, "reliability.random",
+                       "unknown random input '" + key + "' (allowed: contact_ratio, wear_coefficient, load, surface_hardness)");
+    }
+  }
+  return s;
+}
+
+WearReliabilityOptions wear_reliability_options(const Drive& drive) {
+  WearReliabilityOptions o;
+  o.bootstrap_replicates = drive.reliability.bootstrap_replicates;
+  o.life_table = drive.reliability.life_table;
+  o.life_table_tolerance = drive.reliability.life_table_tolerance;
+  return o;
+}
+
+WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabilityOptions& opt) {
+  const SourceMark where{drive.source_file, 0, 0};
+  if (!(drive.wear.coefficient > 0)) {
+    throw InputError(where, "wear.coefficient", "wear is not configured: give wear.coefficient (and wear.hardness, duty)");
+  }
+  if (!(drive.duty.rack_meshes_per_year > 0)) {
+    throw InputError(where, "duty.rack_meshes_per_year", "a duty is needed for lives in years: give duty.rack_meshes_per_year > 0");
+  }
+  WearReliabilityResult out;
+  const WearModel model(drive);
+  auto t0 = std::chrono::steady_clock::now();
+  out.nominal = model.life();
+  out.nominal_ms = ms_since(t0);
+
+  const ReliabilitySpec& spec = drive.reliability;
+  const std::vector<RandomInput>& inputs = spec.inputs;
+  if (inputs.empty()) return out;
+
+  // Each input's distribution around this design's own value (absolute
+  // inputs as given).
+  std::vector<statistics::Distribution> dist;
+  for (const RandomInput& in : inputs) {
+    dist.push_back(input_distribution(in, design_value(drive, in.key, model.nominal_contact_ratio())));
+    out.input_keys.push_back(in.key);
+  }
+  const std::size_t n = static_cast<std::size_t>(opt.samples > 0 ? opt.samples : spec.samples);
+  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed >= 0 ? opt.seed : static_cast<long>(spec.seed));
+  const std::size_t dim = inputs.size();
+  const statistics::PointSet points = spec.sobol ? statistics::sobol_points(n, dim, true, seed)
+                                                  : statistics::pseudo_random_points(n, dim, seed);
+  out.input_values.assign(n, std::vector<double>(dim));
+  // Values outside their input's domain (life/sample_domain.hpp): the sample
+  // is not evaluated but recorded as a failed evaluation with this reason.
+  std::vector<std::string> outside(n);
+  out.outside_domain_samples.assign(dim, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < dim; ++k) {
+      const double x = dist[k].quantile(points.at(i, k));
+      out.input_values[i][k] = x;
+      if (auto why = outside_input_domain(inputs[k].key, x)) {
+        ++out.outside_domain_samples[k];
+        if (outside[i].empty()) {
+          outside[i] = "sampled " + inputs[k].key + " " + (std::isfinite(x) ? num(x) + " " : "") + *why +
+                       ": not a drive, excluded";
+        }
+      }
+    }
+  }
+  unsigned threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
+  out.threads_used = threads;
+  out.seed_used = seed;
+  out.samples_used = static_cast<long>(n);
+  out.criteria.assign(n, std::string());
+
+  auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
+
+  // One input, in the probabilities of its quantiles:
+  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
+  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
+  //    summary: R(t) and the life at R are conditional on a valid sample.
+  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
+  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
+  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
+  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
+  double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
+  const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
+  if (positive_input) {
+    v0 = std::clamp(dist[0].cdf(0.0), 0.0, 1.0);
+    qa = v0;
+  } else if (dim == 1 && inputs[0].key == "contact_ratio") {
+    xa = std::max(1.0, drive.wear.min_contact_ratio);
+    xb = model.max_contact_ratio();
+    qa = dist[0].cdf(xa);
+    qb = std::max(qa, dist[0].cdf(xb));
+  }
+  const double valid_probability = 1.0 - v0;
+
+  // The life table (one input): nodes over the [1e-9, 1 - 1e-9] quantiles
+  // of the input (clipped to [xa, xb]), so that it serves the samples and the
+  // exact map and does not depend on the samples drawn.
+  t0 = std::chrono::steady_clock::now();
+  std::optional<statistics::FunctionTable> table;
+  LifeTableReport& tr = out.table;
+  if (dim != 1) {
+    tr.not_used = "several random inputs: one model life per sample";
+  } else if (!opt.life_table) {
+    tr.not_used = "life_table option off";
+  } else {
+    constexpr double kTail = 1e-9;
+    // A positive input's lowest node stays above 0 (the value at v0 is 0).
+    const double ql = std::max(qa, kTail) + (positive_input && v0 > 0 ? kTail : 0.0);
+    const double qh = std::min(qb, 1.0 - kTail);
+    // Quantiles only strictly inside (0, 1): a scatter wholly outside the
+    // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
+    const bool inside = qh > ql;
+    const double lo = inside ? std::max(xa, dist[0].quantile(ql)) : 0.0;
+    const double hi = inside ? std::min(xb, dist[0].quantile(qh)) : 0.0;
+    if (!inside || !(hi > lo)) {
+      tr.not_used = "almost every sample fails at once or lies outside the input's domain";
+    } else {
+      statistics::FunctionTableOptions to;
+      to.initial_nodes = opt.life_table_nodes;
+      to.rel_tolerance = opt.life_table_tolerance;
+      to.max_evaluations = opt.life_table_max_evaluations;
+      to.threads = threads;
+      try {
+        table = statistics::FunctionTable::build(
+            [&](double x) {
+              const WearLifeResult r = life_of(x);
+              return statistics::TaggedValue{r.life_years, criterion_tag(r)};
+            },
+            lo, hi, to);
+      } catch (const InputError& e) {
+        tr.not_used = std::string("the model rejected a table node: ") + e.what();
+      } catch (const DesignError& e) {
+        tr.not_used = std::string("the model failed at a table node: ") + e.what();
+      }
+      if (table) {
+        tr.used = true;
+        tr.x_min = lo;
+        tr.x_max = hi;
+        tr.nodes = static_cast<int>(table->x().size());
+        tr.evaluations = table->evaluations();
+        tr.max_check_error = table->max_check_error();
+        tr.uncovered_fraction = table->uncovered_fraction();
+        tr.breaks = table->breaks();
+      }
+    }
+  }
+
+  std::atomic<std::size_t> interpolated{0};
+  out.lives = statistics::evaluate_samples(n, threads, [&](std::size_t i) {
+    if (opt.stop && opt.stop()) return std::numeric_limits<double>::quiet_NaN();  // skipped, thrown below
+    if (opt.progress) opt.progress->tick();
+    if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
+    double years;
+    const double x = out.input_values[i][0];
+    if (table && table->covers(x)) {
+      const statistics::TaggedValue v = *(*table)(x);
+      years = v.value;
+      out.criteria[i] = criterion_of_tag(v.tag);  // each index written by one thread only
+      interpolated.fetch_add(1, std::memory_order_relaxed);
+    } else {
+      const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]));
+      out.criteria[i] = r.criterion;
+      years = r.life_years;
+    }
+    return years * kSecondsPerYear;
+  });
+  if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
+  tr.samples_interpolated = table ? interpolated.load() : 0;
+  tr.samples_direct = n - tr.samples_interpolated;
+  out.samples_ms = ms_since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  statistics::ReliabilityRequest req;
+  req.ks_level = spec.ks_level;
+  req.reliabilities = spec.reliabilities;
+  req.times = spec.times;
+  req.bootstrap_replicates = opt.bootstrap_replicates;
+  req.seed = seed;
+  req.threads = threads;
+  const std::size_t evaluated = static_cast<std::size_t>(
+      std::count_if(out.lives.begin(), out.lives.end(), [](const statistics::SampleResult& s) { return s.ok(); }));
+  if (evaluated > 0) {
+    out.summary = statistics::summarize_lives(out.lives, req);
+  } else {
+    // Nothing to summarize (summarize_lives rejects an empty sample): the
+    // counts only, no R(t) and no life at R.
+    out.summary.samples_total = n;
+    out.summary.failed_evaluations = n;
+  }
+
+  // Exact results for one monotone input: the life at R is the life at that
+  // input's quantile (docs/models/reliability.md).
+  const auto t_exact = std::chrono::steady_clock::now();
+  if (dim == 1) {
+    const statistics::Distribution& d0 = dist[0];
+    auto life_at_q = [&](double q) { return life_of(d0.quantile(q)).life_years; };
+    ExactReliability& ex = out.exact;
+    ex.available = valid_probability > 0;  // else every sample lies outside the domain
+    ex.input = inputs[0].key;
+    ex.outside_domain = v0;
+    ex.failed_at_start = ex.available ? std::clamp(1.0 - (qb - qa) / valid_probability, 0.0, 1.0) : 0.0;
+    if (!ex.available) {
+      // no life at R and no R(t) from the exact path
+    } else if (qb - qa > 1e-12) {
+      bool increasing = true;
+      ex.monotone_verified = table && table->monotone(&increasing);
+      if (ex.monotone_verified) {
+        ex.life_increases = increasing;
+      } else {
+        const double l1 = life_at_q(qa + 0.25 * (qb - qa)), l2 = life_at_q(qa + 0.75 * (qb - qa));
+        ex.model_evaluations += 2;
+        ex.life_increases = l2 >= l1;
+      }
+      // life at R: P(life > t_R | valid) = R, one model life at the
+      // quantile. An R above the probability of starting inside the bounds
+      // cannot be reached: life 0.
+      for (double R : spec.reliabilities) {
+        const double q = ex.life_increases ? qb - R * valid_probability : qa + R * valid_probability;
+        if (q < qa || q > qb) {
+          ex.life_at_R_years.push_back(0.0);
+        } else {
+          ex.life_at_R_years.push_back(life_at_q(std::clamp(q, qa + 1e-12, qb - 1e-12)));
+          ++ex.model_evaluations;
+        }
+      }
+      // R(t): the probability q* in [qa, qb] where the life crosses t.
+      const bool up = ex.life_increases;
+      auto R_of_q = [&](double q) { return std::clamp((up ? qb - q : q - qa) / valid_probability, 0.0, 1.0); };
+      ex.R_at_times.assign(spec.times.size(), 0.0);
+      std::vector<int> evaluations(spec.times.size(), 0);
+      if (ex.monotone_verified) {
+        // Invert the table, then polish with two model lives (a Newton step
+        // on the table's slope, then the secant through both): the root of
+        // the model's own life, not of the interpolant.
+        const std::vector<double>& xs = table->x();
+        const std::vector<double>& ys = table->y();
+        parallel_for(spec.times.size(), threads, [&](std::size_t k) {
+          const double t = spec.times[k] / kSecondsPerYear;
+          // Outside the node values the root lies in the 1e-9 tails (or in
+          // the inputs that fail at once): R is the bound's, to 1e-9.
+          if (up ? t < ys.front() : t >= ys.front()) {
+            ex.R_at_times[k] = R_of_q(qa);
+            return;
+          }
+          if (up ? t >= ys.back() : t < ys.back()) {
+            ex.R_at_times[k] = R_of_q(qb);
+            return;
+          }
+          std::size_t j = 0;
+          while (j + 2 < ys.size() && (up ? !(t < ys[j + 1]) : !(t >= ys[j + 1]))) ++j;
+          const double xl = xs[j], xr = xs[j + 1];
+          const double x1 = table->invert_in_interval(j, t);
+          const double f1 = life_of(x1).life_years - t;
+          double root = x1;
+          int used = 1;
+          double s = table->slope(x1);
+          if (!(s != 0)) s = (ys[j + 1] - ys[j]) / (xr - xl);
+          const double x2 = std::clamp(x1 - f1 / s, xl, xr);
+          if (f1 != 0 && x2 != x1) {
+            const double f2 = life_of(x2).life_years - t;
+            ++used;
+            root = f2 != f1 ? std::clamp(x2 - f2 * (x2 - x1) / (f2 - f1), xl, xr) : x2;
+          }
+          evaluations[k] = used;
+          ex.R_at_times[k] = R_of_q(d0.cdf(root));
+        });
+      } else {
+        // Bisection on the probability, one model life per step.
+        for (std::size_t k = 0; k < spec.times.size(); ++k) {
+          const double t_years = spec.times[k] / kSecondsPerYear;
+          double a = qa + 1e-12, b = qb - 1e-12;
+          for (int it = 0; it < 60; ++it) {
+            const double m = 0.5 * (a + b);
+            const bool below = life_at_q(m) <= t_years;  // life(q) <= t
+            if (up == below) {
+              a = m;
+            } else {
+              b = m;
+            }
+          }
+          evaluations[k] = 60;
+          ex.R_at_times[k] = R_of_q(0.5 * (a + b));
+        }
+      }
+      for (int e : evaluations) ex.model_evaluations += e;
+    } else {
+      ex.life_at_R_years.assign(spec.reliabilities.size(), 0.0);
+      ex.R_at_times.assign(spec.times.size(), 0.0);
+    }
+  }
+  out.exact_ms = ms_since(t_exact);
+  out.fit_ms = ms_since(t0);
+
+  failed_sample_warnings(drive, model, out);
+
+  const double nominal_years = out.nominal.life_years;
+  for (std::size_t k = 0; k < out.exact.life_at_R_years.size() && k < spec.reliabilities.size(); ++k) {
+    if (auto w = life_at_R_above_nominal(spec.reliabilities[k], out.exact.life_at_R_years[k], nominal_years,
+                                         "exact quantile of " + out.exact.input))
+      out.warnings.push_back(*w);
+  }
+  if (out.warnings.empty() && !out.exact.available && n > 1) {  // one warning per R: the exact life when there is one
+    for (const statistics::LifeAtReliability& la : out.summary.life) {
+      const statistics::LifeInterval& li = la.fit ? *la.fit : la.empirical;
+      if (!li.lower_bounded) continue;
+      if (auto w = life_at_R_above_nominal(la.reliability, li.lower / kSecondsPerYear, nominal_years,
+                                           la.fit ? "lower end of the fitted interval"
+                                                  : "lower end of the empirical interval"))
+        out.warnings.push_back(*w);
+    }
+  }
+  return out;
+}
+
+}  // namespace rackopt

@@ -1,0 +1,136 @@
+// Wear life at reliability R (docs/models/reliability.md): the deterministic wear
+// life of the nominal drive, then one wear life per Monte Carlo sample of the
+// problem's random inputs, then the fitted life distribution, R(t) and the life
+// at each requested R (from the fit and empirically, with intervals).
+//
+// Determinism: sample i's inputs depend only on (reliability.seed, i) and the
+// lives are stored by index, so the result is the same on any thread count.
+// A sampled contact ratio outside [max(1, [eps]), eps_max] fails at once with
+// life 0 and is counted in R(t); a sampled value outside its input's domain
+// (not finite, or <= 0 for a load, coefficient or hardness) is a failed
+// evaluation, excluded and counted (life/sample_domain.hpp). Neither is a
+// crash, and neither gives the nominal life.
+//
+// Example:
+//   Drive d = load_problem("problems/ship_lift.yaml");
+//   WearReliabilityResult r = run_wear_reliability(d, {});
+//   r.nominal.life_years; r.summary.life[0].fit->estimate / kSecondsPerYear;
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rackopt/core/drive.hpp"
+#include "rackopt/statistics/reliability.hpp"
+#include "rackopt/wear/wear_life.hpp"
+
+namespace rackopt {
+
+class ProgressBar;
+
+struct WearReliabilityOptions {
+  long samples = -1;        // > 0 overrides reliability.samples
+  long seed = -1;           // >= 0 overrides reliability.seed
+  unsigned threads = 0;     // 0 = hardware concurrency; results do not depend on it
+  ProgressBar* progress = nullptr;  // ticked once per sample
+  // Polled before each sample (Ctrl-C): once true the remaining samples are
+  // skipped and run_wear_reliability throws rackopt::Interrupted.
+  std::function<bool()> stop;
+  // KS critical values and fit intervals. At 100 the critical value's
+  // bootstrap sd is 0.0015 against 0.0010 at 200, i.e. 5 % against 3.5 % of
+  // its value (docs/models/reliability.md, "Bootstrap replicates"); at 200
+  // the bootstrap alone takes twice the 100 ms budget of a life-at-R run.
+  int bootstrap_replicates = 100;
+  // One random input: the lives of the samples and the exact quantile map
+  // come from a verified table of life(input) (reliability/function_table.hpp)
+  // instead of one model life per sample (docs/models/reliability.md, "Life
+  // table"). false = one direct life per sample and R(t) by bisection.
+  bool life_table = true;
+  int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
+  double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
+  int life_table_max_evaluations = 96;    // model lives the table may use
+};
+
+// The options a problem asks for: bootstrap_replicates, life_table and
+// life_table_tolerance from its `reliability` section (everything else at
+// the defaults above). Callers then override what the command line or a
+// study sets.
+WearReliabilityOptions wear_reliability_options(const Drive& drive);
+
+// How the one-input life table was used (empty when it was not).
+struct LifeTableReport {
+  bool used = false;
+  std::string not_used;            // why not (several inputs, option off, model error, ...)
+  double x_min = 0, x_max = 0;     // tabulated input range (SI): the [1e-9, 1 - 1e-9] quantiles
+                                   // clipped to the inputs that do not fail at once
+  int nodes = 0;
+  int evaluations = 0;             // model lives spent on the table (nodes + checks)
+  double max_check_error = 0;      // largest relative midpoint error accepted
+  double uncovered_fraction = 0;   // of [x_min, x_max], left to direct evaluation
+  std::vector<std::pair<double, double>> breaks;  // input brackets where the failure mode switches
+  std::size_t samples_interpolated = 0, samples_direct = 0;
+};
+
+// When the drive has exactly one random input and the life is a monotone
+// function of it, R(t) and the life at R follow exactly from that input's
+// quantiles (no sampling error). The life at R is one model life at the
+// input's quantile. R(t) inverts life(input): with the life table, the table
+// is inverted and the root polished with two model lives (secant); without
+// it, 60 bisection steps on the probability.
+struct ExactReliability {
+  bool available = false;
+  bool monotone_verified = false;       // the table's nodes are monotone (false without a table:
+                                        // monotonicity is then assumed, checked at 2 points only)
+  int model_evaluations = 0;            // model lives spent on the exact map
+  std::string input;                    // the random input's key
+  bool life_increases = true;           // with the input
+  double failed_at_start = 0;           // probability of a valid sample outside [max(1, [eps]), eps_max] (life 0)
+  double outside_domain = 0;            // probability of a value outside the input's domain (<= 0 for a
+                                        // positive input): excluded, R is conditional on a valid sample
+  std::vector<double> life_at_R_years;  // for reliability.reliabilities
+  std::vector<double> R_at_times;       // for reliability.times
+};
+
+struct WearReliabilityResult {
+  WearLifeResult nominal;                       // deterministic life of the nominal drive
+  std::vector<std::string> input_keys;          // random inputs, in order
+  std::vector<std::vector<double>> input_values;  // [sample][input], SI
+  std::vector<statistics::SampleResult> lives; // value = life [s]
+  std::vector<std::string> criteria;            // failure criterion per sample ("" when failed to evaluate)
+  // Per input: samples whose value lies outside the input's domain
+  // (life/sample_domain.hpp); those samples are failed evaluations.
+  std::vector<std::size_t> outside_domain_samples;
+  // "" without random inputs; "ok"; "every_sample_fails_at_once" (every
+  // evaluated sample has life 0: the life at every R is 0, R(t) = 0);
+  // "no_valid_sample" (no sample could be evaluated: the summary has no
+  // R(t) and no life at R, and the exact path is unavailable).
+  std::string status;
+  statistics::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
+  ExactReliability exact;
+  LifeTableReport table;
+  // samples_ms: the sample lives (with the table: building it and
+  // interpolating); fit_ms: summary + exact map, of which exact_ms the map.
+  double nominal_ms = 0, samples_ms = 0, fit_ms = 0, exact_ms = 0;
+  unsigned threads_used = 1;
+  std::uint64_t seed_used = 0;  // the Monte Carlo seed in effect (options.seed, else reliability.seed)
+  long samples_used = 0;        // the sample count in effect
+  // A life at R >= 0.5 above the nominal life (life/life_at_R_check.hpp),
+  // one per R: from the exact quantile path when there is one, else from the
+  // sampled summary (lower end of its interval) when more than one sample
+  // was drawn.
+  std::vector<std::string> warnings;
+};
+
+// Throws InputError when wear, duty or reliability is not configured enough
+// to run (no wear coefficient, no duty, no random input for a reliability run).
+// With no random inputs only the nominal life is computed (summary empty).
+WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabilityOptions& options);
+
+// The WearSample that realises values x (SI, one per input) for `drive`.
+WearSample wear_sample_for(const Drive& drive, const std::vector<RandomInput>& inputs,
+                           const std::vector<double>& x);
+
+}  // namespace rackopt

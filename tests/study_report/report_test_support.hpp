@@ -1,0 +1,173 @@
+// Helpers the tests of tests/report share (one unity batch compiles several
+// of its files together, so each helper is defined once, here): temporary
+// folders, reading files and CSV tables, a synthetic study whose metrics are
+// simple functions of the design, and report.md's links.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/study/study_result.hpp"
+#include "rackopt/study/study_spec.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace rackopt;
+using namespace rackopt::study;
+using namespace rackopt::study_report;
+
+std::string tmp_dir(const std::string& name) {
+  const auto dir = fs::temp_directory_path() / ("rackopt_report_test_" + name);
+  fs::remove_all(dir);
+  return dir.string();
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> row;
+    std::string cell;
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (c == '"' && quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        row.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    row.push_back(cell);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+bool gnuplot_available() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+ObjectiveSpec objective(const std::string& text, bool maximize = false) {
+  ObjectiveSpec o;
+  o.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  o.label = metrics::to_string(o.metric);
+  o.maximize = maximize;
+  return o;
+}
+
+ConstraintSpec constraint_min(const std::string& text, double min) {
+  ConstraintSpec c;
+  c.metric = metrics::resolve_request(metrics::parse_metric_request(text));
+  c.label = metrics::to_string(c.metric);
+  c.min = min;
+  return c;
+}
+
+DesignVariable variable(const std::string& key, QuantityKind kind, const std::string& unit, double lo, double hi) {
+  DesignVariable v;
+  v.key = key;
+  v.kind = kind;
+  v.unit = unit;
+  v.lower = lo;
+  v.upper = hi;
+  return v;
+}
+
+// Two variables (module in mm, span in m), objective stiffness_fluctuation,
+// constraint contact_ratio >= 1.3, extra metric min_stiffness.
+StudySpec base_spec(StudyKind kind) {
+  StudySpec s;
+  s.name = "synthetic";
+  s.file = "synthetic.yaml";
+  s.description = "A made-up study whose metrics are simple functions of x.";
+  s.kind = kind;
+  s.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml";
+  s.variables.push_back(variable("pinion.module", QuantityKind::kLength, "mm", 0.02, 0.032));
+  s.variables.push_back(variable("rack.span", QuantityKind::kLength, "m", 1.2, 3.0));
+  s.objectives.push_back(objective("stiffness_fluctuation"));
+  s.constraints.push_back(constraint_min("contact_ratio", 1.3));
+  s.report_metrics.push_back(metrics::parse_metric_request("min_stiffness"));
+  return s;
+}
+
+// A design whose metrics are simple functions of x, so every number in the
+// report can be traced back: fluctuation = module*10 + span/100,
+// contact_ratio = 1 + span/4, min_stiffness = 1e8 * module.
+DesignResult design(const StudySpec& spec, double module, double span, const std::string& label) {
+  DesignResult d;
+  d.x = {module, span};
+  for (const auto& m : spec.all_metrics()) d.metric_labels.push_back(metrics::to_string(m));
+  for (const auto& l : d.metric_labels) {
+    double v = 0;
+    if (l == "stiffness_fluctuation") v = module * 10 + span / 100;
+    if (l == "supports_per_metre") v = 1.0 / span;
+    if (l == "contact_ratio") v = 1 + span / 4;
+    if (l == "min_stiffness") v = 1e8 * module;
+    d.metric_values.push_back(v);
+    d.metric_ok.push_back(true);
+  }
+  for (const auto& o : spec.objectives) {
+    for (std::size_t i = 0; i < d.metric_labels.size(); ++i) {
+      if (d.metric_labels[i] == o.label) d.objectives.push_back(d.metric_values[i]);
+    }
+  }
+  const double cr = 1 + span / 4;
+  d.max_violation = std::max(0.0, (1.3 - cr) / 1.3);
+  d.ok = true;
+  d.feasible = d.max_violation <= 1e-6;
+  d.label = label;
+  return d;
+}
+
+// Every link target of report.md, relative to its folder.
+std::vector<std::string> markdown_links(const std::string& md) {
+  // (no std::regex: GCC 12 warns inside it under the sanitizer build)
+  std::vector<std::string> out;
+  for (std::size_t at = md.find("]("); at != std::string::npos; at = md.find("](", at + 2)) {
+    const std::size_t end = md.find(')', at + 2);
+    if (end == std::string::npos) break;
+    out.push_back(md.substr(at + 2, end - at - 2));
+  }
+  return out;
+}
+
+void expect_links_exist(const std::string& dir) {
+  const std::string md = slurp(dir + "/report.md");
+  ASSERT_FALSE(md.empty());
+  const auto links = markdown_links(md);
+  EXPECT_FALSE(links.empty());
+  for (const auto& l : links) {
+    const fs::path p = fs::path(l).is_absolute() ? fs::path(l) : fs::path(dir) / l;
+    EXPECT_TRUE(fs::exists(p)) << "report.md links a missing file: " << l;
+  }
+}
+
+}  // namespace
