@@ -12,6 +12,7 @@
 
 #include "metrics_test_support.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
+#include "rackopt/metrics/model_results.hpp"
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/period_stats.hpp"
@@ -29,10 +30,11 @@ TEST(MeshDynamicsMetrics, RegisteredWithUnitsAndTheCurveModel) {
   for (const char* n : kNames) {
     SCOPED_TRACE(n);
     const MetricDefinition& d = find_metric(n);
-    EXPECT_EQ(d.models, (ModelSet{Model::kStiffnessCurve}));
+    const bool te = std::string(n).rfind("transmission_error", 0) == 0;
+    // The figure it reads and the curve that figure comes from.
+    EXPECT_EQ(d.models, (ModelSet{Model::kStiffnessCurve, te ? Model::kTransmissionError : Model::kMeshRipple}));
     EXPECT_FALSE(d.smooth);  // extremes over periods: kinks in the design
     EXPECT_EQ(d.requirements, 0);
-    const bool te = std::string(n).rfind("transmission_error", 0) == 0;
     EXPECT_EQ(d.unit, te ? "m" : "-");
     EXPECT_EQ(d.display_unit, te ? "um" : "");
   }
@@ -42,12 +44,26 @@ TEST(MeshDynamicsMetrics, ComputedOnlyWhenAskedFor) {
   const Drive d = load_problem(path("rack_railway"));
   const MeshStiffnessModel model(d);
   const StiffnessCurve curve = model.curve();
-  const auto none = mesh_dynamics_figures(model, curve, requests({"min_stiffness", "stiffness_fluctuation"}));
+  const auto none = mesh_dynamics_figures(model, curve, ModelSet{Model::kStiffnessCurve});
   EXPECT_FALSE(none.ripple);
   EXPECT_FALSE(none.transmission_error);
-  const auto ripple_only = mesh_dynamics_figures(model, curve, requests({"mesh_ripple_mean"}));
+  const auto ripple_only = mesh_dynamics_figures(model, curve, find_metric("mesh_ripple_mean").models);
   EXPECT_TRUE(ripple_only.ripple);
   EXPECT_FALSE(ripple_only.transmission_error);
+  // Through evaluate_metrics: the figures a request needs, and nothing else.
+  const MetricValues te = evaluate_metrics(d, requests({"transmission_error_pp", "min_stiffness"}));
+  ASSERT_TRUE(te.all_ok());
+  EXPECT_EQ(te.models_run, (ModelSet{Model::kStiffnessCurve, Model::kTransmissionError}));
+  EXPECT_EQ(te.model_runs, 1);
+}
+
+// The accessors refuse a figure that was not declared (a registry mistake),
+// with a message instead of std::bad_optional_access.
+TEST(MeshDynamicsMetrics, AnUndeclaredFigureIsALogicError) {
+  ModelResults m;
+  m.curve_slot.value = StiffnessCurve{};
+  EXPECT_THROW(m.mesh_ripple(), std::logic_error);
+  EXPECT_THROW(m.transmission_error(), std::logic_error);
 }
 
 TEST(MeshDynamicsMetrics, ValuesAreTheStiffnessModulesAndTheClosedForm) {

@@ -87,6 +87,16 @@ TEST(CheckOutputFile, TextTablesEndWithANewlineAndHaveTheirSize) {
   EXPECT_NE(check_output_file(put(dir + "/e.svg", "<svg>\n<g>"), "e.svg"), "");
 }
 
+// A format the check does not know is refused, not published unverified.
+TEST(CheckOutputFile, AnUnknownFormatIsRefused) {
+  const std::string dir = tmp_dir("unknown");
+  const std::string why = check_output_file(put(dir + "/deck.inp.tmp", "*NODE\n"), "deck.inp");
+  EXPECT_NE(why.find("no completeness check for the format '.inp'"), std::string::npos) << why;
+  EXPECT_NE(check_output_file(put(dir + "/README", "text\n"), "README"), "");
+  EXPECT_THROW(write_file_atomic(dir + "/table.txt", "a\n"), std::runtime_error);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/table.txt"));
+}
+
 // Runs `body` in a forked child that may write at most `limit` bytes per
 // file, SIGXFSZ ignored; returns the child's exit code.
 template <class F>

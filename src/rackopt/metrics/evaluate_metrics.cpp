@@ -1,5 +1,7 @@
 #include "rackopt/metrics/evaluate_metrics.hpp"
 
+#include "rackopt/statistics/goodness_of_fit.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -172,8 +174,9 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   if (reliability) {
     const std::size_t n_inputs = drive.reliability.inputs.size();
     const bool monte_carlo = n_inputs >= 2 || (n_inputs == 1 && !o.exact_quantile);
-    if (monte_carlo && o.bootstrap_replicates != 0 && o.bootstrap_replicates < 20)
-      missing("bootstrap_replicates", "must be 0 (the problem's reliability.bootstrap_replicates) or >= 20");
+    if (monte_carlo && o.bootstrap_replicates != 0 && o.bootstrap_replicates < statistics::kMinBootstrapReplicates)
+      missing("bootstrap_replicates", "must be 0 (the problem's reliability.bootstrap_replicates) or >= " +
+                                          std::to_string(statistics::kMinBootstrapReplicates));
   }
 }
 
@@ -218,7 +221,10 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     try {
       const MeshStiffnessModel model(drive);
       m.curve_slot.value = model.curve();
-      m.dynamics_figures = mesh_dynamics_figures(model, *m.curve_slot.value, resolved);
+      // Post-processing of the one curve: listed in models_run, not counted as runs.
+      m.dynamics_figures = mesh_dynamics_figures(model, *m.curve_slot.value, needed);
+      if (m.dynamics_figures.ripple) out.models_run.insert(Model::kMeshRipple);
+      if (m.dynamics_figures.transmission_error) out.models_run.insert(Model::kTransmissionError);
       for (const std::string& w : m.curve_slot.value->warnings) add_warning(out, w);
     } catch (const DesignError& e) {
       m.curve_slot.failure = failure_of(e, Model::kStiffnessCurve);

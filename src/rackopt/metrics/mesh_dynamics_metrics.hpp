@@ -26,9 +26,10 @@ struct MeshDynamicsFigures {
   std::optional<TransmissionError> transmission_error;
 };
 
-// Computes the ripple when a mesh_ripple_* metric is requested and the
-// transmission error when a transmission_error_* one is; nothing otherwise.
+// Computes the ripple when `needed` holds Model::kMeshRipple and the
+// transmission error when it holds Model::kTransmissionError (the models the
+// requested metrics declare in the registry); nothing otherwise.
 MeshDynamicsFigures mesh_dynamics_figures(const MeshStiffnessModel& model, const StiffnessCurve& curve,
-                                          std::span<const MetricRequest> requests);
+                                          const ModelSet& needed);
 
 }  // namespace rackopt::metrics

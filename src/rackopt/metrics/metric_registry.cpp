@@ -52,6 +52,8 @@ std::string_view model_name(Model m) {
     case Model::kWearLife: return "wear_life";
     case Model::kWearReliability: return "wear_reliability";
     case Model::kStress: return "stress";
+    case Model::kMeshRipple: return "mesh_ripple";
+    case Model::kTransmissionError: return "transmission_error";
   }
   return "?";
 }
@@ -59,7 +61,7 @@ std::string_view model_name(Model m) {
 std::vector<std::string> ModelSet::names() const {
   std::vector<std::string> out;
   for (Model m : {Model::kGeometry, Model::kStiffnessCurve, Model::kWearLife, Model::kWearReliability,
-                  Model::kStress}) {
+                  Model::kStress, Model::kMeshRipple, Model::kTransmissionError}) {
     if (contains(m)) out.emplace_back(model_name(m));
   }
   return out;
@@ -90,17 +92,9 @@ const MetricDefinition& find_metric(std::string_view name) {
     if (d.name == name) return d;
   }
   std::string msg = "unknown metric '" + std::string(name) + "'";
-  const MetricDefinition* best = nullptr;
-  std::size_t best_d = std::numeric_limits<std::size_t>::max();
-  for (const MetricDefinition& d : reg) {
-    const std::size_t e = edit_distance(name, d.name);
-    if (e < best_d) {
-      best_d = e;
-      best = &d;
-    }
-  }
-  const std::size_t allowed = std::max<std::size_t>(2, name.size() / 3);
-  if (best && best_d <= allowed) msg += " (did you mean '" + std::string(best->name) + "'?)";
+  std::vector<std::string> names;
+  for (const MetricDefinition& d : reg) names.emplace_back(d.name);
+  if (const auto best = closest_name(name, names)) msg += " (did you mean '" + *best + "'?)";
   msg += "; valid metrics:";
   for (const MetricDefinition& d : reg) {
     msg += " ";

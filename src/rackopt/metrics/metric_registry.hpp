@@ -27,6 +27,10 @@ enum class Model : std::uint8_t {
   kWearLife = 4,         // WearModel(drive).life() (about 0.3 ms)
   kWearReliability = 8,  // life at reliability R (exact quantile or Monte Carlo)
   kStress = 16,          // tooth-root and flank stresses, ISO 6336-style simplified
+  // Per-mesh-period figures derived from the stiffness curve (a metric that
+  // reads one declares the curve too): computed only when a metric asks.
+  kMeshRipple = 32,         // per-period stiffness ripple (mesh_ripple.hpp)
+  kTransmissionError = 64,  // loaded static transmission error per period (transmission_error.hpp)
 };
 
 // A small set of models (bit set over Model).

@@ -73,15 +73,23 @@ struct ModelResults {
 
   const MeshGeometry& geometry() const { return get(geometry_slot, "geometry"); }
   const StiffnessCurve& curve() const { return get(curve_slot, "stiffness_curve"); }
-  const MeshDynamicsFigures& dynamics() const {
-    curve();  // a failed curve fails these too
-    return dynamics_figures;
+  const MeshRipple& mesh_ripple() const { return figure(dynamics_figures.ripple, "mesh_ripple"); }
+  const TransmissionError& transmission_error() const {
+    return figure(dynamics_figures.transmission_error, "transmission_error");
   }
   const WearLifeResult& wear_life() const { return get(wear_slot, "wear_life"); }
   const LifeAtR& life_at_R() const { return get(life_at_R_slot, "wear_reliability"); }
   const ToothStress& stress() const { return get(stress_slot, "stress"); }
 
  private:
+  // A per-period figure of the curve: a failed curve fails it too.
+  template <class T>
+  const T& figure(const std::optional<T>& value, const char* model) const {
+    curve();
+    if (!value) throw std::logic_error(std::string("a metric read the model '") + model +
+                                       "' without declaring it in the metric registry");
+    return *value;
+  }
   template <class T>
   static const T& get(const ModelSlot<T>& slot, const char* model) {
     if (slot.failure) throw ModelFailed(*slot.failure);

@@ -112,6 +112,10 @@ std::string check_output_file(const std::string& path, const std::string& format
     if (!why.empty()) return why;
   } else if (ext == ".csv" || ext == ".md" || ext == ".gp") {
     if (read_range(in, size - 1, 1) != "\n") return "does not end with a newline (truncated)";
+  } else {
+    // A format nobody taught the check would be published unverified.
+    return "no completeness check for the format '" + ext +
+           "'; add one to check_output_file (docs/extending.md, \"A new output file or format\")";
   }
   return "";
 }

@@ -15,7 +15,9 @@ namespace rackopt {
 //  * .svg: "</svg>" in the last bytes;
 //  * .json: one complete JSON value (balanced objects/arrays/strings, nothing
 //    but white space after it);
-//  * .csv, .md, .gp: ends with a newline.
+//  * .csv, .md, .gp: ends with a newline;
+//  * any other extension: refused ("no completeness check for the format"),
+//    so a new format cannot be published unverified by accident.
 // Returns "" when the file passes, else what is wrong ("empty", "no IEND
 // chunk at the end (truncated PNG)", ...).
 std::string check_output_file(const std::string& path, const std::string& format_name, long long expected_size = -1);

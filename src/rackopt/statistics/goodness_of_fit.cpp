@@ -89,7 +89,8 @@ std::vector<double> draw_sample(const Distribution& d, std::size_t n, std::uint6
 std::vector<BootstrapReplicate> parametric_bootstrap(Family family, const Distribution& fitted,
                                                      std::size_t n,
                                                      const BootstrapOptions& options) {
-  if (options.replicates < 20) bad("the bootstrap needs at least 20 replicates");
+  if (options.replicates < kMinBootstrapReplicates)
+    bad("the bootstrap needs at least " + std::to_string(kMinBootstrapReplicates) + " replicates");
   if (n < 2) bad("the bootstrap needs a sample of at least 2 values");
   std::vector<BootstrapReplicate> out(static_cast<std::size_t>(options.replicates));
   parallel_for(out.size(), options.threads, [&](std::size_t b) {
@@ -116,10 +117,10 @@ KsTest ks_test_from_bootstrap(const Distribution& fitted, std::span<const double
   std::vector<double> dstar;
   for (const auto& r : replicates)
     if (r.refit) dstar.push_back(r.ks_statistic);
-  if (dstar.size() < 20)
+  if (dstar.size() < static_cast<std::size_t>(kMinBootstrapReplicates))
     throw DesignError("bootstrap_failed", "only " + std::to_string(dstar.size()) + " of " +
-                                              std::to_string(replicates.size()) +
-                                              " bootstrap refits succeeded (20 needed)");
+                                              std::to_string(replicates.size()) + " bootstrap refits succeeded (" +
+                                              std::to_string(kMinBootstrapReplicates) + " needed)");
   std::sort(dstar.begin(), dstar.end());
   const std::size_t b = dstar.size();
   t.replicates_used = static_cast<int>(b);

@@ -19,6 +19,12 @@
 
 namespace rackopt::statistics {
 
+// Fewest bootstrap replicates (and successful refits) for a p-value: below
+// this the critical value of the KS statistic is read from too few points.
+// Every reader of a replicate count (problem files, study files, metric
+// options) refuses less.
+inline constexpr int kMinBootstrapReplicates = 20;
+
 // D_N = sup_x |F_N(x) - F(x)| for the sample (any order; sorted internally).
 // Empty or non-finite sample -> InputError.
 double ks_statistic(const Distribution& d, std::span<const double> sample);
@@ -41,7 +47,7 @@ std::vector<double> draw_sample(const Distribution& d, std::size_t n, std::uint6
                                 std::uint64_t stream);
 
 struct BootstrapOptions {
-  int replicates = 200;      // B >= 20 (else InputError)
+  int replicates = 200;      // B >= kMinBootstrapReplicates (else InputError)
   std::uint64_t seed = 1;    // replicate b uses stream b of this seed
   unsigned threads = 1;      // the result does not depend on it
 };

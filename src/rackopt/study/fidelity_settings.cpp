@@ -1,5 +1,6 @@
 #include "rackopt/study/fidelity_settings.hpp"
 
+#include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt::study {
@@ -17,7 +18,9 @@ std::vector<std::pair<std::string, std::string>> fidelity_settings(const Drive& 
     out.emplace_back("wear.update_profile", on(d.wear.update_profile));
   }
   bool life_at_R = false;
-  for (const auto& m : spec.all_metrics()) life_at_R = life_at_R || m.name == "wear_life_at_R";
+  // Any metric that runs the wear reliability model samples with these settings.
+  for (const auto& m : spec.all_metrics())
+    life_at_R = life_at_R || metrics::find_metric(m.name).models.contains(metrics::Model::kWearReliability);
   if (life_at_R) {
     const metrics::MetricOptions& o = spec.metric_options;
     const std::size_t inputs = d.reliability.inputs.size();
