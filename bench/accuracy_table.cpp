@@ -434,7 +434,7 @@ StudyOutcome solve_sizing(const StudyConfig& cfg, std::size_t budget, double xto
     rackopt::solvers::SolverResult r = rackopt::solvers::minimize(q, q.start_unit(), s);
     out.evaluations += r.evaluations;
     out.probes += r.gradient_evaluations;
-    out.status += (c ? "/" : "") + r.status;
+    out.status += (c ? "/" : "") + std::string(to_string(r.status));
     runs.emplace_back(std::move(q), std::move(r));
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -68,7 +68,7 @@ int cmd_run(const Args& a) {
   };
 
   const study::StudyResult result = study::run_study(spec, opt);
-  bar->finish(result.status != "stopped");  // finish the progress line before anything else is printed
+  bar->finish(result.status != study::StudyStatus::kStopped);  // finish the progress line before anything else is printed
   const study_report::StudyReport rep = study_report::write_study_report(spec, result, out_dir);
 
   const std::string text = study_report::study_summary_text(spec, result, rep, out_dir);
@@ -81,8 +81,8 @@ int cmd_run(const Args& a) {
   }
   // Stopped, or interrupted after the last evaluation (while the report was
   // written): either way the run was interrupted.
-  if (result.status == "stopped" || stop_requested()) return kInterruptedExit;
-  if (result.status == "all_failed") return kRunFailed;
+  if (result.status == study::StudyStatus::kStopped || stop_requested()) return kInterruptedExit;
+  if (result.status == study::StudyStatus::kAllFailed) return kRunFailed;
   if (spec.verify_fe && !result.fe_verification && result.best_drive) return kRunFailed;  // asked for, failed
   return kOk;
 }

@@ -35,7 +35,7 @@ void expect_optimum(const rs::Problem& p, const std::vector<double>& x0, const C
   SCOPED_TRACE(label(c.settings));
   const rs::SolverResult r = rs::minimize(p, x0, c.settings);
   ASSERT_TRUE(r.feasible) << r.status << " " << r.solver_message;
-  EXPECT_EQ(r.status, "converged") << r.solver_message;
+  EXPECT_EQ(to_string(r.status), "converged") << r.solver_message;
   ASSERT_EQ(r.x.size(), x_star.size());
   for (std::size_t i = 0; i < x_star.size(); ++i) EXPECT_NEAR(r.x[i], x_star[i], c.x_tol) << "component " << i;
   EXPECT_NEAR(r.evaluation.objectives[0], f_star, 10 * c.x_tol * (1 + std::abs(f_star)));

@@ -146,7 +146,7 @@ TEST(FiniteDifferences, IpoptCentralReachesTheOptimumWithinTheBudget) {
     rs::SolverSettings s = ipopt_settings(600);
     s.central_differences = true;
     const rs::SolverResult r = rs::minimize(c.problem, c.x0, s);
-    EXPECT_EQ(r.status, "converged") << r.solver_message;
+    EXPECT_EQ(to_string(r.status), "converged") << r.solver_message;
     EXPECT_LT(r.evaluations, 300u);
     for (std::size_t i = 0; i < c.x_star.size(); ++i) EXPECT_NEAR(r.x[i], c.x_star[i], 1e-7);
   }

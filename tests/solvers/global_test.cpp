@@ -109,7 +109,7 @@ TEST(Global, MultistartEscapesLocalMinimum) {
     s.starts = 5;
     const rs::SolverResult five = rs::minimize(p, std::vector<double>{0.9}, s);
     EXPECT_NEAR(five.x[0], x_global, 1e-4);
-    EXPECT_EQ(five.status, "converged");
+    EXPECT_EQ(to_string(five.status), "converged");
     EXPECT_NE(five.solver_message.find("start 4:"), std::string::npos) << five.solver_message;
   }
 }

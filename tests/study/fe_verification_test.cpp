@@ -106,7 +106,7 @@ TEST(FeVerification, AFailedSolveIsReportedAndTheStudyKeepsItsResults) {
   };
   const StudyResult r = run_study(spec, o);
   ASSERT_TRUE(r.best);
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(to_string(r.status), "ok");
   EXPECT_FALSE(r.fe_verification);
   EXPECT_NE(r.fe_verification_error.find("no convergence"), std::string::npos) << r.fe_verification_error;
   EXPECT_NE(r.fe_verification_error.find("/tmp/rackopt-ccx-abc/job.inp"), std::string::npos);
@@ -136,7 +136,7 @@ TEST(FeVerification, NothingWithoutVerifyAndNoSolveWithoutADesign) {
   EXPECT_EQ(rep.summary_json.find("fe_verification"), std::string::npos);
 
   StudyResult none;
-  none.status = "no_feasible_point";
+  none.status = study::StudyStatus::kNoFeasiblePoint;
   verify_best_design_by_fe(verified_spec(), o, none);
   EXPECT_EQ(solves, 0);
   EXPECT_NE(none.fe_verification_error.find("no design to verify"), std::string::npos);

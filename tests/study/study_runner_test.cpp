@@ -84,7 +84,7 @@ TEST(StudySweep, GridIsIndependentOfThreadCount) {
   s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
   const StudyResult one = run_study(s, options_in(fresh_dir("grid1"), 1));
   const StudyResult two = run_study(s, options_in(fresh_dir("grid2"), 2));
-  ASSERT_EQ(one.status, "ok");
+  ASSERT_EQ(to_string(one.status), "ok");
   ASSERT_EQ(one.sweep_points.size(), 35u);
   ASSERT_EQ(two.sweep_points.size(), 35u);
   // Start design (automatic objective scale) + the grid.
@@ -290,7 +290,7 @@ TEST(StudyOptimize, ImpossibleConstraintReportsTheLeastInfeasibleDesign) {
   s.constraints = {constraint("contact_ratio", 3.0)};  // a 14..20 deg pinion of 22 teeth never gets there
   s.solver.max_evaluations = 40;
   const StudyResult r = run_study(s, options_in(fresh_dir("no_feasible")));
-  EXPECT_EQ(r.status, "no_feasible_point");
+  EXPECT_EQ(to_string(r.status), "no_feasible_point");
   EXPECT_FALSE(r.best);
   ASSERT_TRUE(r.least_infeasible);
   EXPECT_TRUE(r.least_infeasible->ok);
@@ -397,7 +397,7 @@ TEST(StudyResume, StoppedRunResumesWithoutRepeatsAndEndsBitIdentical) {
   first.progress = [&](const Progress& p) { done = p.done; };
   first.stop = [&] { return done >= kN; };
   const StudyResult cut = run_study(s, first);
-  EXPECT_EQ(cut.status, "stopped");
+  EXPECT_EQ(to_string(cut.status), "stopped");
   EXPECT_EQ(cut.evaluations, kN);
 
   // Without --resume the folder is refused; another study is refused either way.
@@ -444,12 +444,12 @@ TEST(StudyResume, SweepResumesWhereItStopped) {
   first.progress = [&](const Progress& p) { done = p.done; };
   first.stop = [&] { return done >= 10; };
   const StudyResult cut = run_study(s, first);
-  EXPECT_EQ(cut.status, "stopped");
+  EXPECT_EQ(to_string(cut.status), "stopped");
   EXPECT_LT(cut.sweep_points.size(), 36u);
   RunOptions again = options_in(dir, 2);
   again.resume = true;
   const StudyResult resumed = run_study(s, again);
-  EXPECT_EQ(resumed.status, "ok");
+  EXPECT_EQ(to_string(resumed.status), "ok");
   EXPECT_EQ(resumed.reused_evaluations, cut.evaluations);
   EXPECT_EQ(resumed.evaluations, full.evaluations);
   ASSERT_EQ(resumed.sweep_points.size(), full.sweep_points.size());
@@ -475,7 +475,7 @@ TEST(StudyResume, ReusedDesignsBringTheirWarningsInTheOrderOfAnUninterruptedRun)
   first.progress = [&](const Progress& p) { done = p.done; };
   first.stop = [&] { return done >= kN; };
   const StudyResult cut = run_study(s, first);
-  ASSERT_EQ(cut.status, "stopped");
+  ASSERT_EQ(to_string(cut.status), "stopped");
   RunOptions again = options_in(dir);
   again.resume = true;
   const StudyResult resumed = run_study(s, again);
@@ -578,7 +578,7 @@ TEST(StudyEvaluate, OneDesignMatchesEvaluateMetricsDirectly) {
   s.objectives = {objective("stiffness_fluctuation")};
   s.report_metrics = {metrics::parse_metric_request("min_stiffness"), metrics::parse_metric_request("contact_ratio")};
   const StudyResult r = run_study(s, options_in(fresh_dir("evaluate")));
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(to_string(r.status), "ok");
   EXPECT_EQ(r.evaluations, 1u);
   ASSERT_TRUE(r.best);
   EXPECT_EQ(r.best->x[0], 17 * kDeg);
@@ -619,7 +619,7 @@ TEST(StudyReliability, RunsTheWearAnalysisOfTheDesign) {
   s.report_metrics = {metrics::parse_metric_request("wear_life"), metrics::parse_metric_request("wear_life_at_R(0.9)")};
   s.metric_options.bootstrap_replicates = 20;
   const StudyResult r = run_study(s, options_in(fresh_dir("reliability"), 2));
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(to_string(r.status), "ok");
   ASSERT_TRUE(r.best);
   ASSERT_TRUE(r.reliability);
   EXPECT_EQ(r.reliability->lives.size(), 60u);

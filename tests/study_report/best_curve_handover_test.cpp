@@ -66,7 +66,7 @@ TEST(BestCurveHandover, NoCurveWhenTheStudyDoesNotAskForIt) {
 TEST(BestCurveHandover, ARefusedDesignIsAWarningOfTheReport) {
   StudySpec spec = railway_evaluate_spec(true);
   StudyResult r;
-  r.status = "ok";
+  r.status = study::StudyStatus::kOk;
   Drive pointed = load_problem(spec.problem_path);
   pointed.pinion.profile_shift = 2.5;  // a tooth this far out comes to a point
   r.best_drive = std::make_shared<const Drive>(pointed);

@@ -15,7 +15,7 @@ namespace {
 TEST(StudySummaryText, NamesTheStatusAndTheBestDesign) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "converged";
+  r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 40;
   StudyReport rep;
@@ -34,7 +34,7 @@ TEST(StudySummaryText, NamesTheStatusAndTheBestDesign) {
 TEST(StudySummaryText, ParetoMarksTheChosenPointAndListsItsValues) {
   const StudySpec spec = base_spec(StudyKind::kPareto);
   StudyResult r;
-  r.status = "ok";
+  r.status = study::StudyStatus::kOk;
   r.front = {design(spec, 0.02, 3.0, "eps 0"), design(spec, 0.026, 2.1, "eps 1"), design(spec, 0.032, 1.2, "eps 2")};
   r.chosen = 1;
   r.best = r.front[1];
@@ -50,7 +50,7 @@ TEST(StudySummaryText, ParetoMarksTheChosenPointAndListsItsValues) {
 TEST(StudySummaryText, StoppedRunSaysHowToResumeAndWarningsAreCapped) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "stopped";
+  r.status = study::StudyStatus::kStopped;
   r.evaluations = 12;
   r.least_infeasible = design(spec, 0.02, 1.2, "start 0");
   StudyReport rep;

@@ -30,7 +30,7 @@ namespace {
 TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "converged";
+  r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 40;
   r.reused_evaluations = 8;
@@ -117,7 +117,7 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
 
 StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t chosen) {
   StudyResult r;
-  r.status = "ok";
+  r.status = study::StudyStatus::kOk;
   for (std::size_t k = 0; k < points; ++k) {
     const double t = static_cast<double>(k) / static_cast<double>(points - 1);
     r.front.push_back(design(spec, 0.02 + 0.012 * t, 3.0 - 1.8 * t, "eps " + std::to_string(k)));
@@ -188,7 +188,7 @@ TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
 TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {
   StudySpec spec = base_spec(StudyKind::kSweep);
   StudyResult r;
-  r.status = "ok";
+  r.status = study::StudyStatus::kOk;
   for (int a = 0; a < 5; ++a) {
     for (int b = 0; b < 4; ++b) {
       DesignResult d = design(spec, 0.02 + 0.003 * a, 0.4 + 0.8 * b, "sweep " + std::to_string(a * 4 + b));
@@ -242,7 +242,7 @@ TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {
 TEST(StudyReport, NoFeasiblePointShowsTheLeastInfeasibleDesign) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "no_feasible_point";
+  r.status = study::StudyStatus::kNoFeasiblePoint;
   r.least_infeasible = design(spec, 0.02, 0.8, "start 0");  // contact ratio 1.2 < 1.3
   ASSERT_FALSE(r.least_infeasible->feasible);
   r.evaluations = 12;
@@ -269,7 +269,7 @@ TEST(StudyReport, NoFeasiblePointShowsTheLeastInfeasibleDesign) {
 TEST(StudyReport, StoppedStudySaysHowToResume) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "stopped";
+  r.status = study::StudyStatus::kStopped;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 9;
   const std::string dir = tmp_dir("stopped");
@@ -281,7 +281,7 @@ TEST(StudyReport, StoppedStudySaysHowToResume) {
 TEST(StudyReport, FailedDesignWritesNullsNotNaN) {
   const StudySpec spec = base_spec(StudyKind::kEvaluate);
   StudyResult r;
-  r.status = "all_failed";
+  r.status = study::StudyStatus::kAllFailed;
   DesignResult d = design(spec, 0.02, 1.0, "start 0");
   d.ok = false;
   d.feasible = false;
@@ -307,7 +307,7 @@ TEST(StudyReport, FailedDesignWritesNullsNotNaN) {
 TEST(StudyReport, MissingGnuplotIsAWarningAndNothingLinksAPlot) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
-  r.status = "converged";
+  r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 3;
   r.best_history = {0.5, 0.4, 0.3};
@@ -332,7 +332,7 @@ TEST(StudyReport, OutputSwitchesTurnPlotsAndReportOff) {
   spec.output.plots = false;
   spec.output.report = false;
   StudyResult r;
-  r.status = "converged";
+  r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.best_history = {0.5};
   const std::string dir = tmp_dir("switches");
@@ -347,7 +347,7 @@ TEST(StudyReport, BestDesignsOwnWarningsComeFirstUnderTheirOwnHeading) {
   StudySpec spec = base_spec(StudyKind::kOptimize);
   spec.output.plots = false;
   StudyResult r;
-  r.status = "converged";
+  r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.best->warnings = {"undercut of the best", "shared remark"};
   r.best_history = {0.5};
@@ -393,7 +393,7 @@ TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   opt.threads = 1;
   auto wr = std::make_shared<const WearReliabilityResult>(run_wear_reliability(*drive, opt));
   StudyResult r;
-  r.status = "ok";
+  r.status = study::StudyStatus::kOk;
   r.evaluations = 1;
   r.best_drive = drive;
   r.reliability = wr;

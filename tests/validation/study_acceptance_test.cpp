@@ -243,7 +243,7 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   const StudyResult r = run_study(spec, options_in(fresh_dir("ship_lift_front"), 2));
   ASSERT_GE(r.front.size(), 3u) << r.status;
   std::printf("ship lift front: %zu points, %zu evaluations, status %s\n", r.front.size(), r.evaluations,
-              r.status.c_str());
+              std::string(to_string(r.status)).c_str());
 
   std::vector<std::vector<double>> f;
   for (std::size_t i = 0; i < r.front.size(); ++i) {

@@ -2,11 +2,13 @@
 // EvaluationTracker, and the NLopt algorithm table the settings check uses.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rackopt/solvers/evaluation_tracker.hpp"
 #include "rackopt/solvers/solver.hpp"
+#include "rackopt/solvers/solver_status.hpp"
 
 namespace rackopt::solvers::detail {
 
@@ -33,7 +35,9 @@ const NloptAlgorithmInfo* find_nlopt_algorithm(const std::string& name);
 // How one start ended, as seen by the solver ("" status when the adapter
 // halted it: the tracker's halt() tells why).
 struct StartOutcome {
-  std::string status;   // "converged" | "max_evaluations" | "max_time" | "max_iterations" | "solver_failed" | ""
+  // kConverged, kMaxEvaluations, kMaxTime, kMaxIterations or kSolverFailed;
+  // nullopt when the adapter halted the start (the tracker's halt() says why).
+  std::optional<SolverStatus> status;
   std::string message;  // return code name (+ details)
 };
 

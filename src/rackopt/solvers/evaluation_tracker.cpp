@@ -25,16 +25,16 @@ std::string describe_point(const std::vector<double>& x) {
 
 }  // namespace
 
-const char* halt_status(Halt h) {
+std::optional<SolverStatus> halt_status(Halt h) {
   switch (h) {
     case Halt::kBudget:
-    case Halt::kRequests: return "max_evaluations";
-    case Halt::kTime: return "max_time";
-    case Halt::kStop: return "stopped";
+    case Halt::kRequests: return SolverStatus::kMaxEvaluations;
+    case Halt::kTime: return SolverStatus::kMaxTime;
+    case Halt::kStop: return SolverStatus::kStopped;
     case Halt::kNone:
     case Halt::kError: break;
   }
-  return "";
+  return std::nullopt;
 }
 
 std::size_t max_point_requests(const SolverSettings& settings) {

@@ -7,6 +7,10 @@
 // the best point seen. Solvers only ever see what this class hands them.
 #pragma once
 
+#include <optional>
+
+#include "rackopt/solvers/solver_status.hpp"
+
 #include <chrono>
 #include <cstddef>
 #include <exception>
@@ -34,7 +38,7 @@ enum class Halt { kNone, kBudget, kTime, kStop, kError, kRequests };
 std::size_t max_point_requests(const SolverSettings& settings);
 
 // Status string of SolverResult for a halt reason ("" for kNone/kError).
-const char* halt_status(Halt h);
+std::optional<SolverStatus> halt_status(Halt h);
 
 // Thrown inside the tracker when the run must end (budget, time, stop
 // request). Every solver callback catches it; it never leaves the adapters.

@@ -209,19 +209,19 @@ StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& s
     case Ipopt::Solved_To_Acceptable_Level:
     case Ipopt::Search_Direction_Becomes_Too_Small:
     case Ipopt::Feasible_Point_Found:
-      outcome.status = "converged";
+      outcome.status = SolverStatus::kConverged;
       break;
-    case Ipopt::Maximum_Iterations_Exceeded: outcome.status = "max_iterations"; break;
-    case Ipopt::Maximum_CpuTime_Exceeded: outcome.status = "max_time"; break;
+    case Ipopt::Maximum_Iterations_Exceeded: outcome.status = SolverStatus::kMaxIterations; break;
+    case Ipopt::Maximum_CpuTime_Exceeded: outcome.status = SolverStatus::kMaxTime; break;
     case Ipopt::Invalid_Option:
     case Ipopt::Not_Enough_Degrees_Of_Freedom:
     case Ipopt::Invalid_Problem_Definition:
       throw std::invalid_argument(std::string("Ipopt rejected the problem: ") + outcome.message);
-    default: outcome.status = "solver_failed"; break;
+    default: outcome.status = SolverStatus::kSolverFailed; break;
   }
   if (tracker.start_point_failed())
     outcome.message += ": evaluation failed at the start point: " + tracker.start_point_message();
-  if (tracker.halt() != Halt::kNone) outcome.status.clear();
+  if (tracker.halt() != Halt::kNone) outcome.status.reset();
   return outcome;
 }
 

@@ -218,16 +218,16 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
   try {
     const nlopt::result r = opt.optimize(x_start, f);
     outcome.message = result_name(r);
-    if (r == nlopt::MAXEVAL_REACHED) outcome.status = "max_evaluations";
-    else if (r == nlopt::MAXTIME_REACHED) outcome.status = "max_time";
-    else outcome.status = "converged";
+    if (r == nlopt::MAXEVAL_REACHED) outcome.status = SolverStatus::kMaxEvaluations;
+    else if (r == nlopt::MAXTIME_REACHED) outcome.status = SolverStatus::kMaxTime;
+    else outcome.status = SolverStatus::kConverged;
   } catch (const nlopt::roundoff_limited&) {
     // x is still good (docs/dependencies.md, "NLopt 2.7"); our best point is independent of it.
-    outcome.status = "converged";
+    outcome.status = SolverStatus::kConverged;
     outcome.message = "NLOPT_ROUNDOFF_LIMITED";
   } catch (const nlopt::forced_stop&) {
     outcome.message = "NLOPT_FORCED_STOP";
-    outcome.status = tracker.halt() == Halt::kNone ? "solver_failed" : "";
+    if (tracker.halt() == Halt::kNone) outcome.status = SolverStatus::kSolverFailed;
   } catch (const std::invalid_argument& e) {
     tracker.rethrow_if_error();
     throw std::invalid_argument(std::string("NLopt rejected the settings for ") + algorithm.name + ": " + e.what());
@@ -235,11 +235,11 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
     tracker.rethrow_if_error();
     throw;
   } catch (const std::runtime_error& e) {
-    outcome.status = "solver_failed";
+    outcome.status = SolverStatus::kSolverFailed;
     outcome.message = std::string("NLOPT_FAILURE: ") + e.what();
   }
   tracker.rethrow_if_error();
-  if (tracker.halt() != Halt::kNone) outcome.status.clear();
+  if (tracker.halt() != Halt::kNone) outcome.status.reset();
   return outcome;
 }
 

@@ -261,7 +261,7 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
     result.evaluations += r.evaluations;
     result.failed_evaluations += r.failed_evaluations;
     ++result.subproblems;
-    if (r.status == "stopped") stopped = true;
+    if (r.status == SolverStatus::kStopped) stopped = true;
     std::optional<Evaluation> original = sub.original_at(r.x);
     if (!original) return std::nullopt;  // stopped before its first evaluation
     ParetoPoint p;
@@ -358,14 +358,24 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
   }
 
   if (stopped)
-    result.status = "stopped";
+    result.status = ParetoStatus::kStopped;
   else if (result.front.empty())
-    result.status = "no_feasible_point";
+    result.status = ParetoStatus::kNoFeasiblePoint;
   else if (!anchors_complete)
-    result.status = "anchor_infeasible";
+    result.status = ParetoStatus::kAnchorInfeasible;
   else
-    result.status = "ok";
+    result.status = ParetoStatus::kOk;
   return result;
+}
+
+std::string_view to_string(ParetoStatus status) {
+  switch (status) {
+    case ParetoStatus::kOk: return "ok";
+    case ParetoStatus::kNoFeasiblePoint: return "no_feasible_point";
+    case ParetoStatus::kAnchorInfeasible: return "anchor_infeasible";
+    case ParetoStatus::kStopped: return "stopped";
+  }
+  return "?";
 }
 
 }  // namespace rackopt::solvers

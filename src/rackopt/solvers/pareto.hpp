@@ -9,7 +9,9 @@
 #include <cstddef>
 #include <functional>
 #include <span>
+#include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rackopt/solvers/problem.hpp"
@@ -49,6 +51,18 @@ struct ParetoPoint {
   bool feasible = false;  // is_feasible(evaluation, solver.constraint_tolerance)
 };
 
+// How a front computation ended (to_string gives the reported text).
+enum class ParetoStatus {
+  kOk,                // every sub-problem was solved
+  kNoFeasiblePoint,   // no feasible point at all (front empty)
+  kAnchorInfeasible,  // some anchor found no feasible point: ideal/nadir come
+                      // from the others and the front may be partial
+  kStopped,           // callbacks.stop asked to stop; front from what was solved
+};
+// "ok", "no_feasible_point", "anchor_infeasible", "stopped".
+std::string_view to_string(ParetoStatus status);
+inline std::ostream& operator<<(std::ostream& out, ParetoStatus status) { return out << to_string(status); }
+
 struct ParetoResult {
   // Feasible, mutually non-dominated, no duplicates, sorted by objective
   // `primary` (ties: by the other objectives in order).
@@ -61,12 +75,7 @@ struct ParetoResult {
   std::vector<double> ideal, nadir;
   // Sums over every sub-solve; `subproblems` counts the anchors too.
   std::size_t evaluations = 0, failed_evaluations = 0, subproblems = 0;
-  // "ok"                 every sub-problem was solved
-  // "no_feasible_point"  no feasible point at all (front empty)
-  // "anchor_infeasible"  some anchor found no feasible point: ideal/nadir
-  //                      come from the others and the front may be partial
-  // "stopped"            callbacks.stop asked to stop; front from what was solved
-  std::string status;
+  ParetoStatus status = ParetoStatus::kOk;
 };
 
 struct ParetoCallbacks {

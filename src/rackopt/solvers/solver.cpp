@@ -257,15 +257,18 @@ SolverResult minimize(const Problem& problem, std::span<const double> x0, const 
                              " were new; it kept revisiting evaluated points (cycling)";
 
   if (result.evaluations > 0 && !tracker.any_ok()) {
-    result.status = "all_failed";
+    result.status = SolverStatus::kAllFailed;
   } else if (result.evaluations > 0 && !tracker.any_feasible()) {
-    result.status = "no_feasible_point";
+    result.status = SolverStatus::kNoFeasiblePoint;
   } else if (tracker.halt() != detail::Halt::kNone) {
-    result.status = detail::halt_status(tracker.halt());
+    // A halt by an error was rethrown above; every other halt has a status.
+    result.status = detail::halt_status(tracker.halt()).value_or(SolverStatus::kSolverFailed);
   } else {
-    const bool any_converged = std::any_of(outcomes.begin(), outcomes.end(),
-                                           [](const detail::StartOutcome& o) { return o.status == "converged"; });
-    result.status = any_converged ? "converged" : outcomes.back().status;
+    const bool any_converged = std::any_of(outcomes.begin(), outcomes.end(), [](const detail::StartOutcome& o) {
+      return o.status == SolverStatus::kConverged;
+    });
+    result.status = any_converged ? SolverStatus::kConverged
+                                  : outcomes.back().status.value_or(SolverStatus::kSolverFailed);
   }
   return result;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "rackopt/solvers/problem.hpp"
+#include "rackopt/solvers/solver_status.hpp"
 
 namespace rackopt::solvers {
 
@@ -72,14 +73,14 @@ struct SolverResult {
   Evaluation evaluation;          // the evaluation of x
   bool feasible = false;
   // Why the run ended, most important first:
-  //   "all_failed"        every evaluation failed (evaluation.message says why)
-  //   "no_feasible_point" evaluations succeeded but none was feasible
-  //   "max_evaluations" | "max_time" | "stopped"   budget (or the request cap) / time / stop request hit
-  //   "converged"         the solver ended by its own convergence test
-  //   "max_iterations"    Ipopt reached ipopt_max_iterations
-  //   "solver_failed"     the solver gave up (NLopt FAILURE, Ipopt restoration failure, ...);
-  //                       x is still the best point seen
-  std::string status;
+  //   kAllFailed        every evaluation failed (evaluation.message says why)
+  //   kNoFeasiblePoint  evaluations succeeded but none was feasible
+  //   kMaxEvaluations | kMaxTime | kStopped   budget (or the request cap) / time / stop request hit
+  //   kConverged        the solver ended by its own convergence test
+  //   kMaxIterations    Ipopt reached ipopt_max_iterations
+  //   kSolverFailed     the solver gave up (NLopt FAILURE, Ipopt restoration failure, ...);
+  //                     x is still the best point seen
+  SolverStatus status = SolverStatus::kConverged;
   std::string solver_message;     // what NLopt/Ipopt said (return code name per start), for the record
   std::size_t evaluations = 0, failed_evaluations = 0;
   std::size_t gradient_evaluations = 0;  // how many of `evaluations` were finite-difference probes

@@ -24,7 +24,7 @@ fe::FeComparisonOptions fe_verification_options(const FeVerifySpec& verify, cons
 
 void verify_best_design_by_fe(const StudySpec& spec, const RunOptions& options, StudyResult& result) {
   if (!spec.verify_fe) return;
-  if (result.status == "stopped") {
+  if (result.status == StudyStatus::kStopped) {
     result.fe_verification_error = "not run: the study was stopped before it ended";
     return;
   }

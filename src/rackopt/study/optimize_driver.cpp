@@ -12,14 +12,14 @@ std::string combination_phase(const StudyProblem& p) {
          p.combination_label() + ")";
 }
 
-std::string drive_optimize(const KindDriverContext& ctx) {
+StudyStatus drive_optimize(const KindDriverContext& ctx) {
   StudyProblem& base = ctx.base;
   EvaluationLedger& ledger = ctx.ledger;
   StudyResult& result = ledger.result();
   const solvers::SolverSettings& solver = ctx.solver;
   const std::size_t combos = base.num_combinations();
-  std::string status;
-  std::vector<std::string> statuses(combos);
+  StudyStatus status = StudyStatus::kConverged;
+  std::vector<std::optional<solvers::SolverStatus>> statuses(combos);  // nullopt: not run (stopped)
   std::string messages;
   for (std::size_t c = 0; c < combos; ++c) {
     if (ledger.stop_requested()) break;
@@ -33,7 +33,7 @@ std::string drive_optimize(const KindDriverContext& ctx) {
       // Every variable discrete: the enumeration is the optimization.
       const std::vector<double> x = p.to_design({});
       ledger.settle(ledger.obtain(p, x), phase.empty() ? "optimize" : phase, false);
-      statuses[c] = "converged";
+      statuses[c] = solvers::SolverStatus::kConverged;
       continue;
     }
     solvers::SolverCallbacks cb;
@@ -47,12 +47,15 @@ std::string drive_optimize(const KindDriverContext& ctx) {
   }
   result.solver_message = messages;
   if (ledger.stopped()) {
-    status = "stopped";
+    status = StudyStatus::kStopped;
   } else if (!ledger.best()) {
-    status = ledger.any_ok() ? "no_feasible_point" : "all_failed";
+    status = ledger.any_ok() ? StudyStatus::kNoFeasiblePoint : StudyStatus::kAllFailed;
   } else {
-    status = statuses[std::min(ledger.best_tag(), combos - 1)];
-    if (status == "no_feasible_point" || status == "all_failed" || status.empty()) status = "converged";
+    // The best design's combination tells how the search ended; a best design
+    // found although its own solve saw none feasible (our re-check) converged.
+    const auto& own = statuses[std::min(ledger.best_tag(), combos - 1)];
+    status = own ? study_status(*own) : StudyStatus::kConverged;
+    if (status == StudyStatus::kNoFeasiblePoint || status == StudyStatus::kAllFailed) status = StudyStatus::kConverged;
   }
   result.best = ledger.best();
   if (combos > 1) {

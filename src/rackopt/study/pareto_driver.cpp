@@ -21,7 +21,7 @@ bool front_less(const DesignResult& a, const DesignResult& b) {
 
 }  // namespace
 
-std::string drive_pareto(const KindDriverContext& ctx) {
+StudyStatus drive_pareto(const KindDriverContext& ctx) {
   const StudySpec& spec = ctx.spec;
   StudyProblem& base = ctx.base;
   EvaluationLedger& ledger = ctx.ledger;
@@ -29,11 +29,11 @@ std::string drive_pareto(const KindDriverContext& ctx) {
   const solvers::SolverSettings& solver = ctx.solver;
   const std::size_t combos = base.num_combinations();
   const std::size_t n_obj = spec.objectives.size();
-  std::string status;
+  StudyStatus status = StudyStatus::kOk;
   solvers::ParetoSettings ps = spec.pareto;
   ps.solver = solver;
   std::vector<DesignResult> candidates;
-  std::vector<std::string> statuses;
+  std::vector<StudyStatus> statuses;
   for (std::size_t c = 0; c < combos; ++c) {
     if (ledger.stop_requested()) break;
     const StudyProblem p = base.for_combination(c);
@@ -47,7 +47,7 @@ std::string drive_pareto(const KindDriverContext& ctx) {
       ledger.settle(o, phase, false);
       const DesignResult d = ledger.to_result(o.design, phase);
       if (d.feasible) candidates.push_back(d);
-      statuses.push_back(d.feasible ? "ok" : "no_feasible_point");
+      statuses.push_back(d.feasible ? StudyStatus::kOk : StudyStatus::kNoFeasiblePoint);
       continue;
     }
     solvers::ParetoCallbacks cb;
@@ -65,7 +65,7 @@ std::string drive_pareto(const KindDriverContext& ctx) {
       throw study_error(spec, "solver", e.what());
     }
     rp.settle_pending();
-    statuses.push_back(pr.status);
+    statuses.push_back(study_status(pr.status));
     for (const solvers::ParetoPoint& fp : pr.front) {
       const std::vector<double> x = p.to_design(fp.x);
       const std::string label = phase.empty() ? fp.label : phase + ": " + fp.label;
@@ -132,11 +132,11 @@ std::string drive_pareto(const KindDriverContext& ctx) {
     result.best = result.front[*result.chosen];
   }
   if (ledger.stopped()) {
-    status = "stopped";
+    status = StudyStatus::kStopped;
   } else if (result.front.empty()) {
-    status = ledger.any_ok() ? "no_feasible_point" : "all_failed";
+    status = ledger.any_ok() ? StudyStatus::kNoFeasiblePoint : StudyStatus::kAllFailed;
   } else {
-    status = combos == 1 && !statuses.empty() ? statuses[0] : "ok";
+    status = combos == 1 && !statuses.empty() ? statuses[0] : StudyStatus::kOk;
   }
   return status;
 }

@@ -4,18 +4,18 @@
 
 namespace rackopt::study {
 
-std::string drive_single_design(const KindDriverContext& ctx, const std::optional<Obtained>& start) {
+StudyStatus drive_single_design(const KindDriverContext& ctx, const std::optional<Obtained>& start) {
   const StudySpec& spec = ctx.spec;
   StudyProblem& base = ctx.base;
   EvaluationLedger& ledger = ctx.ledger;
   StudyResult& result = ledger.result();
   const RunOptions& options = ctx.options;
-  std::string status;
-  if (!start) return "stopped";
+  StudyStatus status = StudyStatus::kOk;
+  if (!start) return StudyStatus::kStopped;
   result.best = ledger.to_result(start->design, "start");
-  status = start->design.evaluation.ok() ? "ok" : "all_failed";
+  status = start->design.evaluation.ok() ? StudyStatus::kOk : StudyStatus::kAllFailed;
   if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok() && ledger.stop_requested()) {
-    status = "stopped";  // the reliability analysis did not run
+    status = StudyStatus::kStopped;  // the reliability analysis did not run
   } else if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok()) {
     try {
       const Drive design = base.drive_at(start->design.x);
@@ -33,9 +33,9 @@ std::string drive_single_design(const KindDriverContext& ctx, const std::optiona
       result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
     } catch (const Interrupted&) {
       ledger.stop_requested();  // latch: the study stopped; --resume redoes the Monte Carlo
-      status = "stopped";
+      status = StudyStatus::kStopped;
     } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
-      status = "all_failed";
+      status = StudyStatus::kAllFailed;
       result.solver_message = std::string("wear reliability: ") + e.what();
     }
   }

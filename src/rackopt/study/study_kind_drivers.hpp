@@ -15,6 +15,7 @@
 #include "rackopt/study/evaluation_ledger.hpp"
 #include "rackopt/study/study_problem.hpp"
 #include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/study_status.hpp"
 
 namespace rackopt::study {
 
@@ -38,19 +39,19 @@ std::string combination_phase(const StudyProblem& p);
 // evaluate and reliability: the start design is the result (and, for
 // reliability, its wear reliability analysis). `start` is empty when the
 // study was stopped before it.
-std::string drive_single_design(const KindDriverContext& c, const std::optional<Obtained>& start);
+StudyStatus drive_single_design(const KindDriverContext& c, const std::optional<Obtained>& start);
 
 // The sweep's designs in sampler order (grid: first variable slowest; LHS
 // and Sobol from spec.seed, discrete values snapped to the nearest).
 // Throws InputError when the sampler refuses the settings.
 std::vector<std::vector<double>> sweep_points(const StudySpec& spec);
-std::string drive_sweep(const KindDriverContext& c, const std::vector<std::vector<double>>& points);
+StudyStatus drive_sweep(const KindDriverContext& c, const std::vector<std::vector<double>>& points);
 
 // Every discrete combination optimized from the start point.
-std::string drive_optimize(const KindDriverContext& c);
+StudyStatus drive_optimize(const KindDriverContext& c);
 
 // A front per combination, merged by dominance, sorted by objective 0, one
 // point chosen.
-std::string drive_pareto(const KindDriverContext& c);
+StudyStatus drive_pareto(const KindDriverContext& c);
 
 }  // namespace rackopt::study

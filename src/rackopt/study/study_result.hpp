@@ -16,6 +16,7 @@
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
+#include "rackopt/study/study_status.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 
 namespace rackopt::study {
@@ -38,15 +39,13 @@ struct DesignResult {
 // One discrete combination's outcome in an optimize study.
 struct CombinationOutcome {
   std::string label;                         // "pinion.module=4 mm"
-  std::string status;                        // the solver's status for this combination
+  std::optional<solvers::SolverStatus> status;  // how its solve ended; nullopt when not run (stopped before it)
   std::optional<DesignResult> best;          // best feasible design of the combination
   std::optional<DesignResult> least_infeasible;  // when none is feasible
 };
 
 struct StudyResult {
-  std::string status;   // "ok" (evaluate/sweep/reliability done), the SolverResult / ParetoResult status
-                        // (optimize: "converged", "max_evaluations", ...; pareto: "ok", "anchor_infeasible", ...),
-                        // "no_feasible_point", "all_failed", "stopped"
+  StudyStatus status = StudyStatus::kOk;  // how the study ended (study_status.hpp)
   std::optional<DesignResult> best;            // optimize: best feasible design; evaluate/reliability:
                                                // the design (even when infeasible or failed);
                                                // sweep: best feasible by objective 0 (if any objective);

@@ -96,7 +96,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   }
 
   const KindDriverContext context{spec, options, base, ledger, solver};
-  std::string status;
+  StudyStatus status = StudyStatus::kOk;
   switch (spec.kind) {
     case StudyKind::kEvaluate:
     case StudyKind::kReliability: status = drive_single_design(context, start); break;
@@ -126,7 +126,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
 
   record::EvaluationStore& store = ledger.store();
   store.set_meta("status", ledger.stopped() ? "stopped" : "finished");
-  store.set_meta("result_status", status);
+  store.set_meta("result_status", std::string(to_string(status)));
   record::write_evaluations_csv(store, base.variable_keys(), base.metric_labels(), csv_path);
   // After the record is complete: the curve is for the report only.
   attach_best_design_curve(spec, result);

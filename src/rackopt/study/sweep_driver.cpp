@@ -62,13 +62,13 @@ std::vector<std::vector<double>> sweep_points(const StudySpec& spec) {
   }
 }
 
-std::string drive_sweep(const KindDriverContext& ctx, const std::vector<std::vector<double>>& points) {
+StudyStatus drive_sweep(const KindDriverContext& ctx, const std::vector<std::vector<double>>& points) {
   const StudySpec& spec = ctx.spec;
   StudyProblem& base = ctx.base;
   EvaluationLedger& ledger = ctx.ledger;
   StudyResult& result = ledger.result();
   const std::size_t n_obj = spec.objectives.size();
-  std::string status;
+  StudyStatus status = StudyStatus::kOk;
   ledger.set_phase("sweep");
   const std::size_t chunk = std::max<std::size_t>(8, 8 * static_cast<std::size_t>(ledger.threads()));
   for (std::size_t begin = 0; begin < points.size(); begin += chunk) {
@@ -105,7 +105,7 @@ std::string drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
       result.sweep_points.push_back(ledger.to_result(o.design, label));
     }
   }
-  status = ledger.stopped() ? "stopped" : "ok";
+  status = ledger.stopped() ? StudyStatus::kStopped : StudyStatus::kOk;
   if (n_obj > 0) {
     const bool maximize = spec.objectives[0].maximize;
     for (const DesignResult& p : result.sweep_points) {
@@ -128,7 +128,7 @@ std::string drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
   if (!result.sweep_points.empty() && !ledger.stopped()) {
     bool any_ok = false;
     for (const auto& p : result.sweep_points) any_ok = any_ok || p.ok;
-    if (!any_ok) status = "all_failed";
+    if (!any_ok) status = StudyStatus::kAllFailed;
   }
   return status;
 }

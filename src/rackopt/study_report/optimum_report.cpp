@@ -12,6 +12,15 @@ namespace rackopt::study_report {
 
 // The report reads the study layer's results and settings throughout.
 using namespace rackopt::study;
+
+namespace {
+
+// A combination the study stopped before has no status: shown empty.
+std::string combination_status_text(const CombinationOutcome& c) {
+  return c.status ? std::string(solvers::to_string(*c.status)) : std::string();
+}
+
+}  // namespace
 namespace {
 
 // SI per display unit of a variable (1 for plain numbers).
@@ -52,7 +61,7 @@ std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r
   for (const CombinationOutcome& c : r.per_combination) {
     const DesignResult* d = c.best ? &*c.best : c.least_infeasible ? &*c.least_infeasible : nullptr;
     const bool is_best = c.best && r.best && c.best->x == r.best->x;
-    o << "| " << (is_best ? "**" + c.label + "**" : c.label) << " | " << c.status << " | "
+    o << "| " << (is_best ? "**" + c.label + "**" : c.label) << " | " << combination_status_text(c) << " | "
       << (c.best ? "yes" : d ? "no (least infeasible shown)" : "no design") << " |";
     for (std::size_t i = 0; i < spec.variables.size(); ++i) {
       if (spec.variables[i].discrete()) continue;
@@ -152,7 +161,7 @@ void optimum_json(JsonWriter& j, const StudySpec& spec, const StudyResult& r,
   if (!r.per_combination.empty()) {
     j.key("per_combination").begin_array();
     for (const CombinationOutcome& c : r.per_combination) {
-      j.begin_object().key("combination").value(c.label).key("status").value(c.status);
+      j.begin_object().key("combination").value(c.label).key("status").value(combination_status_text(c));
       j.key("best");
       if (c.best) {
         design(j, spec, *c.best);

@@ -119,7 +119,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   }
 
   o << "## Outcome\n\n";
-  o << "**Status: " << result.status << "**: " << status_message(spec, result) << "\n\n";
+  o << "**Status: " << to_string(result.status) << "**: " << status_message(spec, result) << "\n\n";
   if (!result.solver_message.empty()) o << "Solver: " << md_cell(result.solver_message) << "\n\n";
   if (spec.kind == StudyKind::kPareto && !result.front.empty()) {
     o << "### Pareto front (" << result.front.size() << " points)\n\n| # | chosen |";

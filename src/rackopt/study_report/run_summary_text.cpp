@@ -33,7 +33,7 @@ void design_lines(std::ostringstream& o, const StudySpec& spec, const DesignResu
 std::string study_summary_text(const StudySpec& spec, const StudyResult& r, const StudyReport& rep,
                                const std::string& out_dir) {
   std::ostringstream o;
-  o << "study " << spec.name << " (" << kind_name(spec.kind) << "): " << r.status << "\n";
+  o << "study " << spec.name << " (" << kind_name(spec.kind) << "): " << to_string(r.status) << "\n";
   o << "  " << status_message(spec, r) << "\n";
   if (spec.kind == StudyKind::kPareto && !r.front.empty()) {
     o << "  Pareto front, " << r.front.size() << " points:\n";
@@ -99,7 +99,7 @@ std::string study_summary_text(const StudySpec& spec, const StudyResult& r, cons
   }
   const std::string md = rep.files.get("report_md");
   o << "  wrote " << out_dir << "/ (" << (md.empty() ? std::string("summary.json") : md) << ")\n";
-  if (r.status == "stopped") o << "  continue with: rackopt run " << spec.file << " --out " << out_dir << " --resume\n";
+  if (r.status == StudyStatus::kStopped) o << "  continue with: rackopt run " << spec.file << " --out " << out_dir << " --resume\n";
   return o.str();
 }
 

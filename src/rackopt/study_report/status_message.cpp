@@ -12,10 +12,10 @@ using namespace rackopt::study;
 
 std::string status_message(const StudySpec& spec, const StudyResult& r) {
   const std::string n = std::to_string(r.evaluations) + " evaluation" + (r.evaluations == 1 ? "" : "s");
-  if (r.status == "stopped") {
+  if (r.status == StudyStatus::kStopped) {
     return "stopped after " + n + "; the results so far are written. Continue with --resume (same --out).";
   }
-  if (r.status == "no_feasible_point") {
+  if (r.status == StudyStatus::kNoFeasiblePoint) {
     std::string s = "no feasible design in " + n + ".";
     if (r.least_infeasible) {
       s += " The least infeasible design (" + r.least_infeasible->label + ") violates the constraints by " +
@@ -23,23 +23,23 @@ std::string status_message(const StudySpec& spec, const StudyResult& r) {
     }
     return s;
   }
-  if (r.status == "all_failed") {
+  if (r.status == StudyStatus::kAllFailed) {
     std::string s = "every one of the " + n + " failed.";
     const DesignResult* d = r.least_infeasible ? &*r.least_infeasible : (r.best ? &*r.best : nullptr);
     if (d != nullptr && !d->message.empty()) s += " First reason: " + d->message;
     return s;
   }
   std::string s;
-  if (r.status == "ok") {
+  if (r.status == StudyStatus::kOk) {
     s = "done, " + n + ".";
-  } else if (r.status == "converged") {
+  } else if (r.status == StudyStatus::kConverged) {
     s = "converged after " + n + ".";
-  } else if (r.status == "max_evaluations") {
+  } else if (r.status == StudyStatus::kMaxEvaluations) {
     s = "evaluation budget reached (" + n + ").";
-  } else if (r.status == "max_time") {
+  } else if (r.status == StudyStatus::kMaxTime) {
     s = "time limit reached after " + n + ".";
   } else {
-    s = r.status + " after " + n + ".";
+    s = std::string(to_string(r.status)) + " after " + n + ".";
   }
   if (spec.kind == StudyKind::kSweep) {
     const std::size_t feasible = feasible_points(r);

@@ -96,7 +96,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("file").value(spec.file);
   j.key("problem").value(spec.problem_path);
   j.key("seed").value(static_cast<double>(spec.seed));
-  j.key("status").value(result.status);
+  j.key("status").value(std::string(to_string(result.status)));
   j.key("message").value(status_message(spec, result));
   j.key("solver_message").value(result.solver_message);
   j.key("feasible").value(result.best.has_value() && result.best->feasible);
