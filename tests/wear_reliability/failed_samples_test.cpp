@@ -131,7 +131,7 @@ TEST(FailedSamples, NonPositiveHardnessIsAFailedSampleAndTheRunGoesOn) {
   EXPECT_LT(bad, 75u);
   EXPECT_EQ(r.summary.failed_evaluations, bad);
   EXPECT_EQ(count_warnings(r, "surface_hardness: " + std::to_string(bad) + " of 2000 samples"), 1);
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.status, SamplingStatus::kOk);
   for (std::size_t i = 0; i < r.lives.size(); ++i) {
     EXPECT_EQ(r.lives[i].ok(), r.input_values[i][0] > 0) << i;
   }
@@ -186,7 +186,7 @@ TEST(FailedSamples, EveryContactRatioOutOfRangeIsAStatusNotAnError) {
     if (variant == 2) d.wear.min_contact_ratio = 1.6;         // [eps] > eps_max = 1.536
     WearReliabilityResult r;
     ASSERT_NO_THROW(r = run_wear_reliability(d, quick(64))) << variant;
-    EXPECT_EQ(r.status, "every_sample_fails_at_once") << variant;
+    EXPECT_EQ(r.status, SamplingStatus::kEverySampleFailsAtOnce) << variant;
     EXPECT_EQ(r.summary.immediate_failures, 64u) << variant;
     EXPECT_EQ(count_warnings(r, "no life at reliability R"), 1) << variant;
     ASSERT_TRUE(r.exact.available);
@@ -208,7 +208,7 @@ TEST(FailedSamples, LifeAtRIsZeroWhenMoreThanOneMinusRFailAtOnce) {
   d.reliability.reliabilities = {0.9, 0.999};  // about 0.6 % of the samples start above eps_max
   const WearReliabilityResult r = run_wear_reliability(d, quick(1000));
   ASSERT_GT(r.summary.immediate_failures, 1u);
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.status, SamplingStatus::kOk);
   EXPECT_GT(r.summary.life.at(0).empirical.estimate, 0.0);
   EXPECT_EQ(r.summary.life.at(1).empirical.estimate, 0.0);
   if (r.summary.life.at(1).fit) {
@@ -226,7 +226,7 @@ TEST(FailedSamples, NoValidSampleIsAStatusNotAnError) {
   d.reliability.inputs = {input("surface_hardness", RandomInput::Distribution::kNormal, -1e9, 1e6, true)};
   WearReliabilityResult r;
   ASSERT_NO_THROW(r = run_wear_reliability(d, quick(32)));
-  EXPECT_EQ(r.status, "no_valid_sample");
+  EXPECT_EQ(r.status, SamplingStatus::kNoValidSample);
   EXPECT_EQ(r.summary.failed_evaluations, 32u);
   EXPECT_TRUE(r.summary.life.empty());
   EXPECT_TRUE(r.summary.reliability.empty());

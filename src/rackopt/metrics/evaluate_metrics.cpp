@@ -273,13 +273,13 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       for (const std::string& w : r.warnings) add_warning(out, w);  // a life at R above the nominal life
       // No sample could be evaluated (every value outside its input's
       // domain): no life at R, the metric fails with the cause.
-      if (!inputs.empty() && r.status == "no_valid_sample" && !(exact && r.exact.available)) {
+      if (!inputs.empty() && r.status == SamplingStatus::kNoValidSample && !(exact && r.exact.available)) {
         throw DesignError("no_valid_reliability_sample",
                           r.summary.warnings.empty() ? std::string("no reliability sample could be evaluated")
                                                      : r.summary.warnings.back());
       }
       const std::string all_fail =
-          r.status == "every_sample_fails_at_once" ? " (every sample fails at once: no life at any R)" : "";
+          r.status == SamplingStatus::kEverySampleFailsAtOnce ? " (every sample fails at once: no life at any R)" : "";
       for (std::size_t k = 0; k < rel.reliabilities.size(); ++k) {
         if (inputs.empty()) {
           rel.life_s.push_back(r.nominal.life_years * kSecondsPerYear);

@@ -242,7 +242,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("contact_ratio_final").value(n.final_contact_ratio);
   const statistics::ReliabilitySummary& s = r.summary;
   j.key("samples").value(static_cast<long>(r.lives.size()));
-  if (!r.status.empty()) j.key("status").value(r.status);
+  if (r.status) j.key("status").value(std::string(to_string(*r.status)));
   j.key("seed").value(static_cast<long>(r.seed_used));
   j.key("failed_evaluations").value(static_cast<long>(s.failed_evaluations));
   j.key("immediate_failures").value(static_cast<long>(s.immediate_failures));

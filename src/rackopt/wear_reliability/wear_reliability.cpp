@@ -73,7 +73,7 @@ void failed_sample_warnings(const Drive& drive, const WearModel& model, WearReli
   }
   const std::size_t evaluated = s.samples_total - s.failed_evaluations;
   if (evaluated == 0) {
-    out.status = "no_valid_sample";
+    out.status = SamplingStatus::kNoValidSample;
     out.summary.warnings.push_back("no life at reliability R: none" + of_n +
                            " could be evaluated, so there is no R(t) and no life at R");
     return;
@@ -81,13 +81,13 @@ void failed_sample_warnings(const Drive& drive, const WearModel& model, WearReli
   const std::string bounds = "contact ratio outside [" + num(std::max(1.0, drive.wear.min_contact_ratio)) + ", " +
                              num(model.max_contact_ratio()) + "]";
   if (s.immediate_failures == evaluated) {
-    out.status = "every_sample_fails_at_once";
+    out.status = SamplingStatus::kEverySampleFailsAtOnce;
     out.summary.warnings.push_back("no life at reliability R: every evaluated sample (" + std::to_string(evaluated) + of_n +
                            ") fails at once (life 0, " + bounds +
                            "), so the life at every R is 0 and R(t) = 0");
     return;
   }
-  out.status = "ok";
+  out.status = SamplingStatus::kOk;
   if (s.immediate_failures == 0) return;
   const double p0 = static_cast<double>(s.immediate_failures) / static_cast<double>(evaluated);
   std::string unreachable;
@@ -428,6 +428,15 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     }
   }
   return out;
+}
+
+std::string_view to_string(SamplingStatus status) {
+  switch (status) {
+    case SamplingStatus::kOk: return "ok";
+    case SamplingStatus::kEverySampleFailsAtOnce: return "every_sample_fails_at_once";
+    case SamplingStatus::kNoValidSample: return "no_valid_sample";
+  }
+  return "?";
 }
 
 }  // namespace rackopt

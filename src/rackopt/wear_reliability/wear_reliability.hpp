@@ -19,6 +19,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+#include <ostream>
+#include <string_view>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,6 +97,17 @@ struct ExactReliability {
   std::vector<double> R_at_times;       // for reliability.times
 };
 
+// How the Monte Carlo of the wear life ended (to_string gives the text of
+// the JSON and the reports).
+enum class SamplingStatus {
+  kOk,
+  kEverySampleFailsAtOnce,  // every evaluated sample has life 0: the life at every R is 0, R(t) = 0
+  kNoValidSample,           // no sample could be evaluated: no R(t), no life at R, no exact path
+};
+// "ok", "every_sample_fails_at_once", "no_valid_sample".
+std::string_view to_string(SamplingStatus status);
+inline std::ostream& operator<<(std::ostream& out, SamplingStatus status) { return out << to_string(status); }
+
 struct WearReliabilityResult {
   WearLifeResult nominal;                       // deterministic life of the nominal drive
   std::vector<std::string> input_keys;          // random inputs, in order
@@ -103,11 +117,8 @@ struct WearReliabilityResult {
   // Per input: samples whose value lies outside the input's domain
   // (life/sample_domain.hpp); those samples are failed evaluations.
   std::vector<std::size_t> outside_domain_samples;
-  // "" without random inputs; "ok"; "every_sample_fails_at_once" (every
-  // evaluated sample has life 0: the life at every R is 0, R(t) = 0);
-  // "no_valid_sample" (no sample could be evaluated: the summary has no
-  // R(t) and no life at R, and the exact path is unavailable).
-  std::string status;
+  // nullopt without random inputs (nothing sampled).
+  std::optional<SamplingStatus> status;
   statistics::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
   ExactReliability exact;
   LifeTableReport table;
