@@ -1,12 +1,7 @@
 // The rackopt program end to end: exit codes, files written, --json output.
-#include <unistd.h>
-
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -14,55 +9,25 @@
 #include <string>
 #include <vector>
 
+#include "support/cli_process.hpp"
+#include "support/scratch_dir.hpp"
+
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out;  // stdout only
-};
-
-// Runs the CLI with `args` (shell words), from the source directory.
-CliResult run(const std::string& args) {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args +
-                          " 2>/dev/null";
-  CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string tmp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + std::to_string(::getpid())) / name;
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
-// Each test process writes under its own folder (a normal and a sanitizer
-// build, or two checkouts, may run these at once) and removes it at the end.
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_cli_test_" + std::to_string(::getpid())), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
+using rackopt::test_support::CliResult;
+using rackopt::test_support::run_cli;
+using rackopt::test_support::scratch_path;
 
 TEST(Cli, CheckPrintsGeometryAndSucceeds) {
-  const CliResult r = run("check problems/rack_railway.yaml");
+  const CliResult r = run_cli("check problems/rack_railway.yaml");
   EXPECT_EQ(r.code, 0);
   EXPECT_NE(r.out.find("contact ratio"), std::string::npos);
   EXPECT_NE(r.out.find("UNDERCUT"), std::string::npos);  // the rack railway paper's pinion is undercut (docs/models/geometry.md)
 }
 
 TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {
-  const std::string dir = tmp_dir("json");
-  const CliResult r = run("stiffness problems/rack_railway.yaml --json --out " + dir);
+  const std::string dir = scratch_path("json");
+  const CliResult r = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);  // throws if not exactly one JSON value
   ASSERT_TRUE(j.is_object());
@@ -93,8 +58,8 @@ TEST(Cli, StiffnessJsonIsOneObjectWithTheContractKeys) {
 // Mesh ripple and transmission error in the JSON, the deflection column in
 // the CSV (F/K without relief), and a relief given with --set.
 TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
-  const std::string dir = tmp_dir("te");
-  const CliResult r = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
+  const std::string dir = scratch_path("te");
+  const CliResult r = run_cli("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
                           "--set effects.hertz=linear --set effects.rack_foundation=off "
                           "--set effects.fillet_calibration=off --set effects.pair_coupling=off --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
@@ -119,51 +84,45 @@ TEST(Cli, StiffnessReportsRippleAndTransmissionError) {
 
   // The relief was sized on the papers' tooth model (constant contact term,
   // clamped rack tooth, Sainsot's foundation): the same model on both sides.
-  const CliResult relieved = run("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
+  const CliResult relieved = run_cli("stiffness problems/rack_railway.yaml --json --set effects.rack_span=rigid "
                                  "--set effects.hertz=linear --set effects.rack_foundation=off "
                                  "--set effects.fillet_calibration=off --set effects.pair_coupling=off "
                                  "--set 'pinion.tip_relief.amount=42 um' --set pinion.tip_relief.length=1.72 "
                                  "--set 'pinion.root_relief.amount=42 um' --set pinion.root_relief.length=1.72 --out " +
-                                 tmp_dir("te_relief"));
+                                 scratch_path("te_relief"));
   ASSERT_EQ(relieved.code, 0) << relieved.out;
   const auto k = nlohmann::json::parse(relieved.out);
   EXPECT_LT(k["transmission_error"]["peak_to_peak"].get<double>(), 0.25 * pp);  // 22.1 -> 4.1 um
-  EXPECT_EQ(run("stiffness problems/rack_railway.yaml --set 'pinion.tip_relief.amount=42 um' --out " +
-                tmp_dir("te_bad")).code, 2);  // no length
+  EXPECT_EQ(run_cli("stiffness problems/rack_railway.yaml --set 'pinion.tip_relief.amount=42 um' --out " +
+                scratch_path("te_bad")).code, 2);  // no length
 }
 
 TEST(Cli, SetOverridesAKey) {
-  const CliResult a = run("stiffness problems/rack_railway.yaml --json --out " + tmp_dir("a"));
-  const CliResult b = run("stiffness problems/rack_railway.yaml --json --set 'rack.span=1.2 m' --out " + tmp_dir("b"));
+  const CliResult a = run_cli("stiffness problems/rack_railway.yaml --json --out " + scratch_path("a"));
+  const CliResult b = run_cli("stiffness problems/rack_railway.yaml --json --set 'rack.span=1.2 m' --out " + scratch_path("b"));
   ASSERT_EQ(a.code, 0);
   ASSERT_EQ(b.code, 0);
   EXPECT_GT(nlohmann::json::parse(b.out)["k_min"].get<double>(), nlohmann::json::parse(a.out)["k_min"].get<double>());
 }
 
 TEST(Cli, BadInputExitsTwoWithLocation) {
-  const std::string dir = tmp_dir("bad");
+  const std::string dir = scratch_path("bad");
   std::filesystem::create_directories(dir);
   {
     std::ofstream f(dir + "/bad.yaml");
     f << "pinion:\n  teeth: 22\n  module: 31.831 mm\n  modul: 3\n";
   }
-  const std::string cmd = std::string("'") + RACKOPT_CLI + "' check " + dir + "/bad.yaml 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
-  std::string err;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
-  const int status = pclose(p);
-  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const CliResult r = run_cli("check " + dir + "/bad.yaml", {.merge_stderr = true});
+  EXPECT_EQ(r.code, 2);
+  const std::string& err = r.out;
   EXPECT_NE(err.find("bad.yaml:4:3"), std::string::npos) << err;
   EXPECT_NE(err.find("pinion.modul"), std::string::npos) << err;
 }
 
 TEST(Cli, ImpossibleDesignExitsTwoWithCode) {
   // A 1 mm pinion tip thickness budget: 8 teeth with a large shift is pointed.
-  const CliResult r = run("stiffness problems/ship_lift.yaml --json --set pinion.teeth=8 --set pinion.profile_shift=1.0 --out " +
-                    tmp_dir("pointed"));
+  const CliResult r = run_cli("stiffness problems/ship_lift.yaml --json --set pinion.teeth=8 --set pinion.profile_shift=1.0 --out " +
+                    scratch_path("pointed"));
   EXPECT_EQ(r.code, 2);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j["ok"].get<bool>());
@@ -173,25 +132,18 @@ TEST(Cli, ImpossibleDesignExitsTwoWithCode) {
 // --samples has the limit of reliability.samples (kMaxReliabilitySamples), so
 // the command line cannot ask for more than a problem file may.
 TEST(Cli, SamplesLimitIsTheProblemFilesLimit) {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI +
-                          "' wear problems/ship_lift.yaml --samples 1000001 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  ASSERT_NE(p, nullptr);
-  std::string err;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
-  const int status = pclose(p);
-  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --samples 1000001", {.merge_stderr = true});
+  EXPECT_EQ(r.code, 2);
+  const std::string& err = r.out;
   EXPECT_NE(err.find("--samples needs a whole number in 1..1000000"), std::string::npos) << err;
 }
 
 TEST(Cli, UsageErrorsExitTwo) {
-  EXPECT_EQ(run("").code, 2);
-  EXPECT_EQ(run("frobnicate x.yaml").code, 2);
-  EXPECT_EQ(run("stiffness").code, 2);
-  EXPECT_EQ(run("stiffness problems/rack_railway.yaml --bogus").code, 2);
-  EXPECT_EQ(run("check does/not/exist.yaml").code, 2);
+  EXPECT_EQ(run_cli("").code, 2);
+  EXPECT_EQ(run_cli("frobnicate x.yaml").code, 2);
+  EXPECT_EQ(run_cli("stiffness").code, 2);
+  EXPECT_EQ(run_cli("stiffness problems/rack_railway.yaml --bogus").code, 2);
+  EXPECT_EQ(run_cli("check does/not/exist.yaml").code, 2);
 }
 
 }  // namespace
@@ -199,18 +151,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 // A usage error names what is wrong in one line; the whole usage text is for a
 // command line without a command.
 TEST(Cli, UsageErrorIsOneLineUnlessTheCommandIsMissing) {
-  auto stderr_of = [](const std::string& args) {
-    const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args +
-                            " 2>&1 >/dev/null";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string err;
-    if (!p) return err;
-    std::array<char, 4096> buf{};
-    std::size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) err.append(buf.data(), n);
-    pclose(p);
-    return err;
-  };
+  auto stderr_of = [](const std::string& args) { return run_cli(args).err; };
   const std::string with_command = stderr_of("check problems/ship_lift.yaml --bogus");
   EXPECT_NE(with_command.find("unknown option --bogus"), std::string::npos) << with_command;
   EXPECT_EQ(with_command.find("usage:"), std::string::npos) << with_command;

@@ -1,61 +1,26 @@
 // `rackopt fe`: usage errors, a missing solver, an impossible design (each
 // before any file is made), and one real run at the coarsest level.
-#include <unistd.h>
-
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
+#include "support/cli_process.hpp"
+#include "support/scratch_dir.hpp"
+
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out;  // stdout, then stderr when `with_stderr`
-};
-
-CliResult run(const std::string& args, bool with_stderr = false, const std::string& env = "") {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && " + env + " '" + RACKOPT_CLI + "' " + args +
-                          (with_stderr ? " 2>&1" : " 2>/dev/null");
-  CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::filesystem::path tmp_root() {
-  return std::filesystem::temp_directory_path() / ("rackopt_fe_cli_test_" + std::to_string(::getpid()));
-}
-
-std::string tmp_dir(const std::string& name) {
-  const auto dir = tmp_root() / name;
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(tmp_root(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
+using rackopt::test_support::CliResult;
+using rackopt::test_support::run_cli;
+using rackopt::test_support::scratch_path;
+using rackopt::test_support::scratch_root;
 
 TEST(FeCli, BadPositionsLevelAndUnknownOptionsAreUsageErrors) {
-  const std::string dir = tmp_dir("usage");
+  const std::string dir = scratch_path("usage");
   struct Case {
     const char* args;
     const char* says;
@@ -65,29 +30,29 @@ TEST(FeCli, BadPositionsLevelAndUnknownOptionsAreUsageErrors) {
                         Case{"--level 7", "--level needs a whole number in 0..6, got '7'"},
                         Case{"--level -1", "got '-1'"}, Case{"--samples 10", "option --samples does not apply to 'fe'"},
                         Case{"--frobnicate", "unknown option --frobnicate"}}) {
-    const CliResult r = run(std::string("fe problems/gantry_axis.yaml --out ") + dir + " " + c.args, true);
+    const CliResult r = run_cli(std::string("fe problems/gantry_axis.yaml --out ") + dir + " " + c.args, {.merge_stderr = true});
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.out;
     EXPECT_NE(r.out.find(c.says), std::string::npos) << c.args << "\n" << r.out;
   }
   EXPECT_FALSE(std::filesystem::exists(dir));
   // --positions belongs to fe only.
-  const CliResult s = run("stiffness problems/gantry_axis.yaml --positions 3", true);
+  const CliResult s = run_cli("stiffness problems/gantry_axis.yaml --positions 3", {.merge_stderr = true});
   EXPECT_EQ(s.code, 2);
   EXPECT_NE(s.out.find("does not apply to 'stiffness'"), std::string::npos) << s.out;
   // With --json a usage error is one JSON object too.
-  const CliResult j = run("fe problems/gantry_axis.yaml --level 9 --json");
+  const CliResult j = run_cli("fe problems/gantry_axis.yaml --level 9 --json");
   EXPECT_EQ(j.code, 2);
   const auto o = nlohmann::json::parse(j.out);
   EXPECT_EQ(o["error"], "usage");
 }
 
 TEST(FeCli, AMissingCcxIsExitOneNamingThePackageAndLeavesNoFiles) {
-  const std::string dir = tmp_dir("no_ccx");
-  const CliResult r = run("fe problems/gantry_axis.yaml --positions 2 --out " + dir, true, "RACKOPT_CCX=/nonexistent");
+  const std::string dir = scratch_path("no_ccx");
+  const CliResult r = run_cli("fe problems/gantry_axis.yaml --positions 2 --out " + dir, {.env = "RACKOPT_CCX=/nonexistent", .merge_stderr = true});
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("calculix-ccx"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir));
-  const CliResult j = run("fe problems/gantry_axis.yaml --json --out " + dir, false, "RACKOPT_CCX=/nonexistent");
+  const CliResult j = run_cli("fe problems/gantry_axis.yaml --json --out " + dir, {.env = "RACKOPT_CCX=/nonexistent"});
   EXPECT_EQ(j.code, 1);
   const auto o = nlohmann::json::parse(j.out);
   EXPECT_EQ(o["ok"], false);
@@ -97,9 +62,8 @@ TEST(FeCli, AMissingCcxIsExitOneNamingThePackageAndLeavesNoFiles) {
 }
 
 TEST(FeCli, AMissingGmshIsExitOneNamingThePackageAndLeavesNoFiles) {
-  const std::string dir = tmp_dir("no_gmsh");
-  const CliResult j = run("fe problems/gantry_axis.yaml --json --out " + dir, false,
-                          "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so");
+  const std::string dir = scratch_path("no_gmsh");
+  const CliResult j = run_cli("fe problems/gantry_axis.yaml --json --out " + dir, {.env = "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so"});
   EXPECT_EQ(j.code, 1) << j.out;
   const auto o = nlohmann::json::parse(j.out);
   EXPECT_EQ(o["error"], "gmsh_not_found");
@@ -107,16 +71,14 @@ TEST(FeCli, AMissingGmshIsExitOneNamingThePackageAndLeavesNoFiles) {
   EXPECT_NE(o["message"].get<std::string>().find("/nonexistent/libgmsh.so"), std::string::npos) << o["message"];
   EXPECT_FALSE(std::filesystem::exists(dir));
   // Commands that do not mesh never open Gmsh, so they do not miss it.
-  const CliResult s = run("stiffness problems/gantry_axis.yaml --json --out " + dir + "_stiffness", false,
-                          "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so");
+  const CliResult s = run_cli("stiffness problems/gantry_axis.yaml --json --out " + dir + "_stiffness", {.env = "RACKOPT_GMSH_LIBRARY=/nonexistent/libgmsh.so"});
   EXPECT_EQ(s.code, 0) << s.out;
 }
 
 TEST(FeCli, AnImpossibleDesignIsReportedAsTheOtherCommandsDoBeforeAnyFeWork) {
-  const std::string dir = tmp_dir("design");
+  const std::string dir = scratch_path("design");
   // Even with no solver: the design is refused first.
-  const CliResult r = run("fe problems/gantry_axis.yaml --set pinion.addendum=3 --json --out " + dir, false,
-                          "RACKOPT_CCX=/nonexistent");
+  const CliResult r = run_cli("fe problems/gantry_axis.yaml --set pinion.addendum=3 --json --out " + dir, {.env = "RACKOPT_CCX=/nonexistent"});
   EXPECT_EQ(r.code, 2) << r.out;
   const auto o = nlohmann::json::parse(r.out);
   EXPECT_EQ(o["error"], "design:pointed_tooth");
@@ -124,14 +86,14 @@ TEST(FeCli, AnImpossibleDesignIsReportedAsTheOtherCommandsDoBeforeAnyFeWork) {
 }
 
 TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
-  const std::string dir = tmp_dir("study_no_ccx");
-  std::filesystem::create_directories(tmp_root());
-  const std::string study = (tmp_root() / "verify_study.yaml").string();
+  const std::string dir = scratch_path("study_no_ccx");
+  std::filesystem::create_directories(scratch_root());
+  const std::string study = (scratch_root() / "verify_study.yaml").string();
   std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
                        << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
                        << "report: [contact_ratio]\n"
                        << "verify: {method: fe, positions: 2}\n";
-  const CliResult r = run("run " + study + " --out " + dir, true, "RACKOPT_CCX=/nonexistent");
+  const CliResult r = run_cli("run " + study + " --out " + dir, {.env = "RACKOPT_CCX=/nonexistent", .merge_stderr = true});
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("calculix-ccx"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir));
@@ -139,7 +101,7 @@ TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
   std::ofstream(study) << "study: {name: verified, kind: evaluate}\n"
                        << "problem: " << RACKOPT_SOURCE_DIR << "/problems/gantry_axis.yaml\n"
                        << "verify: {method: fe, level: 9}\n";
-  const CliResult b = run("run " + study + " --out " + dir, true);
+  const CliResult b = run_cli("run " + study + " --out " + dir, {.merge_stderr = true});
   EXPECT_EQ(b.code, 2) << b.out;
   EXPECT_NE(b.out.find("verify_study.yaml:3:29"), std::string::npos) << b.out;
   EXPECT_NE(b.out.find("verify.level"), std::string::npos) << b.out;
@@ -150,12 +112,11 @@ TEST(FeCli, AStudyAskingForFeVerificationWithoutCcxIsRefusedBeforeItRuns) {
 // codes is positive, the errors are what the numbers in the files say, and
 // nothing is left behind (no solve folder either).
 TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
-  const std::string dir = tmp_dir("real");
-  const std::string work = tmp_dir("real_work");
+  const std::string dir = scratch_path("real");
+  const std::string work = scratch_path("real_work");
   std::filesystem::create_directories(work);
-  const CliResult r = run("fe problems/gantry_axis.yaml --positions 1 --level 0 --threads 2 --pictures --json --out " +
-                              dir,
-                          false, "TMPDIR=" + work);
+  const CliResult r = run_cli("fe problems/gantry_axis.yaml --positions 1 --level 0 --threads 2 --pictures --json --out " +
+                              dir, {.env = "TMPDIR=" + work});
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(std::filesystem::is_empty(work));
   const auto j = nlohmann::json::parse(r.out);
@@ -209,15 +170,14 @@ TEST(FeCli, RealSolvesOnTheGantryDriveAtLevelZero) {
 // A solve that fails: exit 1 with the solver's own message and the kept
 // deck, no result file.
 TEST(FeCli, AFailingSolverIsExitOneWithItsMessageAndTheKeptDeck) {
-  const std::string dir = tmp_dir("ccx_fails");
-  std::filesystem::create_directories(tmp_root());
-  const std::string fake = (tmp_root() / "fake_ccx").string();
+  const std::string dir = scratch_path("ccx_fails");
+  std::filesystem::create_directories(scratch_root());
+  const std::string fake = (scratch_root() / "fake_ccx").string();
   std::ofstream(fake) << "#!/bin/sh\necho ' *ERROR in fake_ccx: the matrix is singular'\nexit 201\n";
   std::filesystem::permissions(fake, std::filesystem::perms::owner_all);
-  const std::string work = (tmp_root() / "ccx_work").string();
+  const std::string work = (scratch_root() / "ccx_work").string();
   std::filesystem::create_directories(work);
-  const CliResult r = run("fe problems/gantry_axis.yaml --positions 1 --threads 1 --json --out " + dir, false,
-                          "RACKOPT_CCX=" + fake + " TMPDIR=" + work);
+  const CliResult r = run_cli("fe problems/gantry_axis.yaml --positions 1 --threads 1 --json --out " + dir, {.env = "RACKOPT_CCX=" + fake + " TMPDIR=" + work});
   EXPECT_EQ(r.code, 1) << r.out;
   const auto o = nlohmann::json::parse(r.out);
   EXPECT_EQ(o["error"], "fe_solver");

@@ -5,104 +5,40 @@
 // renders or during one long Monte Carlo evaluation, a folder in use, stale
 // temporary files, options that do not apply, the progress line.
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <signal.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "support/cli_process.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using rackopt::test_support::CliOptions;
+using rackopt::test_support::CliResult;
+using rackopt::test_support::read_text;
+using rackopt::test_support::run_cli;
+using rackopt::test_support::scratch_dir;
 
-fs::path tmp_root() { return fs::temp_directory_path() / ("rackopt_guarantees_test_" + std::to_string(::getpid())); }
-
-std::string tmp_dir(const std::string& name) {
-  const auto dir = tmp_root() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-// Each test process writes under its own folder (a normal and a sanitizer
-// build may run these at once) and removes it at the end.
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(tmp_root(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
-
-struct CliResult {
-  int code = -1;
-  std::string out, err;
-  double seconds = 0;
-};
-
-int exit_code(int status) {
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return -1;
-}
-
-// Starts the CLI with `args` (shell words) from the source directory,
-// stdout/stderr to files in `scratch`, with `env` ("A=1 B=2") in front.
-// With file_size_limit > 0 the program (and gnuplot, its child) may not
-// write past that many bytes of any file, SIGXFSZ ignored: writes fail with
-// EFBIG, as on a full disk.
-pid_t start(const std::string& args, const std::string& scratch, const std::string& env = "",
-            long file_size_limit = 0) {
-  const std::string cmd = "cd '" + std::string(RACKOPT_SOURCE_DIR) + "' && " + env + " exec '" + RACKOPT_CLI + "' " +
-                          args + " >'" + scratch + "/stdout.txt' 2>'" + scratch + "/stderr.txt'";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (file_size_limit > 0) {
-      const rlimit lim{static_cast<rlim_t>(file_size_limit), static_cast<rlim_t>(file_size_limit)};
-      setrlimit(RLIMIT_FSIZE, &lim);
-      signal(SIGXFSZ, SIG_IGN);
-    }
-    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
+// A background run keeps its stdout and stderr in `scratch`.
+pid_t start(const std::string& args, const std::string& scratch, const CliOptions& options = {}) {
+  return rackopt::test_support::start_cli(args, scratch + "/stdout.txt", scratch + "/stderr.txt", options);
 }
 
 CliResult finish(pid_t pid, const std::string& scratch, Clock::time_point t0 = Clock::now()) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  CliResult r;
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  r.code = exit_code(status);
-  r.out = slurp(scratch + "/stdout.txt");
-  r.err = slurp(scratch + "/stderr.txt");
-  return r;
-}
-
-CliResult run(const std::string& args, const std::string& scratch, const std::string& env = "",
-              long file_size_limit = 0) {
-  const auto t0 = Clock::now();
-  return finish(start(args, scratch, env, file_size_limit), scratch, t0);
+  return rackopt::test_support::finish_cli(pid, scratch + "/stdout.txt", scratch + "/stderr.txt", t0);
 }
 
 // An executable shell script `name` in `dir` with `body`.
@@ -117,7 +53,7 @@ std::string script(const std::string& dir, const std::string& name, const std::s
 bool wait_for_file(const std::string& path, double seconds) {
   const auto t0 = Clock::now();
   while (std::chrono::duration<double>(Clock::now() - t0).count() < seconds) {
-    if (fs::exists(path) && !slurp(path).empty()) return true;
+    if (fs::exists(path) && !read_text(path).empty()) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return false;
@@ -149,10 +85,9 @@ std::string hanging_gnuplot(const std::string& dir) {
 }
 
 TEST(OutputGuarantees, PlotTruncatedByAFullDiskIsAWarningAndNotPublished) {
-  const std::string dir = tmp_dir("truncated_plot");
+  const std::string dir = scratch_dir("truncated_plot");
   const std::string gp = truncating_gnuplot(dir);
-  const CliResult r = run("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", dir,
-                          "RACKOPT_GNUPLOT='" + gp + "'");
+  const CliResult r = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   ASSERT_EQ(r.code, 0) << r.err;  // a plot is a convenience: exit code unaffected
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["files"]["plot"].is_null()) << j["files"];  // not listed as written
@@ -163,16 +98,15 @@ TEST(OutputGuarantees, PlotTruncatedByAFullDiskIsAWarningAndNotPublished) {
   EXPECT_TRUE(named) << j["warnings"];
   EXPECT_NE(r.err.find("truncated PNG"), std::string::npos) << r.err;
   // The same gnuplot with room to write: the image is published.
-  const CliResult ok = run("stiffness problems/rack_railway.yaml --json --out " + dir + "/ok", dir);
+  const CliResult ok = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir + "/ok");
   ASSERT_EQ(ok.code, 0) << ok.err;
   EXPECT_TRUE(fs::exists(dir + "/ok/stiffness.png"));
 }
 
 TEST(OutputGuarantees, WearPlotsTruncatedByAFullDiskAreNotListed) {
-  const std::string dir = tmp_dir("truncated_wear_plots");
+  const std::string dir = scratch_dir("truncated_wear_plots");
   const std::string gp = truncating_gnuplot(dir);
-  const CliResult r = run("wear problems/ship_lift.yaml --samples 200 --json --out " + dir + "/out", dir,
-                          "RACKOPT_GNUPLOT='" + gp + "'");
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --samples 200 --json --out " + dir + "/out", {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* png : {"wear_profile.png", "life_histogram.png", "reliability.png"}) {
@@ -188,9 +122,9 @@ TEST(OutputGuarantees, WearPlotsTruncatedByAFullDiskAreNotListed) {
 }
 
 TEST(OutputGuarantees, ResultFileWriteFailureExitsOneAndPublishesNothingPartial) {
-  const std::string dir = tmp_dir("full_disk");
+  const std::string dir = scratch_dir("full_disk");
   // stiffness.csv is 866 kB: it cannot be written under a 64 kB limit.
-  const CliResult s = run("stiffness problems/rack_railway.yaml --json --out " + dir + "/s", dir, "", 64 * 1024);
+  const CliResult s = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir + "/s", {.file_size_limit = 64 * 1024});
   EXPECT_EQ(s.code, 1) << s.err;
   const auto j = nlohmann::json::parse(s.out);
   EXPECT_FALSE(j["ok"].get<bool>());
@@ -200,7 +134,7 @@ TEST(OutputGuarantees, ResultFileWriteFailureExitsOneAndPublishesNothingPartial)
   EXPECT_TRUE(leftovers(dir + "/s").empty());
 
   // wear_profile.csv (160 kB) under the same limit.
-  const CliResult w = run("wear problems/ship_lift.yaml --samples 100 --json --out " + dir + "/w", dir, "", 64 * 1024);
+  const CliResult w = run_cli("wear problems/ship_lift.yaml --samples 100 --json --out " + dir + "/w", {.file_size_limit = 64 * 1024});
   EXPECT_EQ(w.code, 1) << w.err;
   EXPECT_FALSE(fs::exists(dir + "/w/wear_profile.csv"));
   EXPECT_TRUE(leftovers(dir + "/w").empty());
@@ -210,7 +144,7 @@ TEST(OutputGuarantees, ResultFileWriteFailureExitsOneAndPublishesNothingPartial)
   std::ofstream(study) << "study: {name: tiny, kind: evaluate}\n"
                        << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
                        << "report: [contact_ratio]\n";
-  const CliResult r = run("run '" + study + "' --json --out " + dir + "/r", dir, "", 8 * 1024);
+  const CliResult r = run_cli("run '" + study + "' --json --out " + dir + "/r", {.file_size_limit = 8 * 1024});
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_FALSE(nlohmann::json::parse(r.out)["ok"].get<bool>());
   EXPECT_FALSE(fs::exists(dir + "/r/summary.json"));
@@ -219,25 +153,23 @@ TEST(OutputGuarantees, ResultFileWriteFailureExitsOneAndPublishesNothingPartial)
 }
 
 TEST(OutputGuarantees, HungGnuplotIsKilledAtTheTimeLimit) {
-  const std::string dir = tmp_dir("hung_plot");
+  const std::string dir = scratch_dir("hung_plot");
   const std::string gp = hanging_gnuplot(dir);
-  const CliResult r = run("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", dir,
-                          "RACKOPT_PLOT_TIMEOUT=1 RACKOPT_GNUPLOT='" + gp + "'");
+  const CliResult r = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", {.env = "RACKOPT_PLOT_TIMEOUT=1 RACKOPT_GNUPLOT='" + gp + "'"});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_LT(r.seconds, 20.0);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["files"]["plot"].is_null());
   ASSERT_TRUE(wait_for_file(dir + "/gnuplot.pid", 1));
-  const pid_t gp_pid = std::stoi(slurp(dir + "/gnuplot.pid"));
+  const pid_t gp_pid = std::stoi(read_text(dir + "/gnuplot.pid"));
   EXPECT_FALSE(process_alive(gp_pid)) << "gnuplot still running";
   EXPECT_NE(r.err.find("stiffness.png not drawn: gnuplot did not finish within 1 s"), std::string::npos) << r.err;
 }
 
 TEST(OutputGuarantees, CtrlCWhilePlotRendersExits130AndEndsGnuplot) {
-  const std::string dir = tmp_dir("sigint_plot");
+  const std::string dir = scratch_dir("sigint_plot");
   const std::string gp = hanging_gnuplot(dir);
-  const pid_t pid = start("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", dir,
-                          "RACKOPT_GNUPLOT='" + gp + "'");
+  const pid_t pid = start("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", dir, {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   ASSERT_GT(pid, 0);
   const bool rendering = wait_for_file(dir + "/gnuplot.pid", 60);
   const auto t0 = Clock::now();
@@ -246,7 +178,7 @@ TEST(OutputGuarantees, CtrlCWhilePlotRendersExits130AndEndsGnuplot) {
   ASSERT_TRUE(rendering) << r.err;
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_LT(r.seconds, 5.0);
-  const pid_t gp_pid = std::stoi(slurp(dir + "/gnuplot.pid"));
+  const pid_t gp_pid = std::stoi(read_text(dir + "/gnuplot.pid"));
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
   EXPECT_FALSE(process_alive(gp_pid)) << "gnuplot still running";
   kill(gp_pid, SIGKILL);  // (in case)
@@ -258,23 +190,22 @@ TEST(OutputGuarantees, CtrlCWhilePlotRendersExits130AndEndsGnuplot) {
 }
 
 TEST(OutputGuarantees, SigtermIsAStopToo) {
-  const std::string dir = tmp_dir("sigterm_plot");
+  const std::string dir = scratch_dir("sigterm_plot");
   const std::string gp = hanging_gnuplot(dir);
-  const pid_t pid = start("stiffness problems/rack_railway.yaml --out " + dir + "/out", dir,
-                          "RACKOPT_GNUPLOT='" + gp + "'");
+  const pid_t pid = start("stiffness problems/rack_railway.yaml --out " + dir + "/out", dir, {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   const bool rendering = wait_for_file(dir + "/gnuplot.pid", 60);
   kill(pid, SIGTERM);
   const CliResult r = finish(pid, dir);
   ASSERT_TRUE(rendering) << r.err;
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("SIGTERM"), std::string::npos) << r.err;
-  kill(std::stoi(slurp(dir + "/gnuplot.pid")), SIGKILL);
+  kill(std::stoi(read_text(dir + "/gnuplot.pid")), SIGKILL);
 }
 
 // A study whose report is being plotted when Ctrl-C comes: every evaluation
 // is done, yet the run was interrupted: 130, and summary.json is complete.
 TEST(OutputGuarantees, CtrlCAfterTheLastEvaluationExits130) {
-  const std::string dir = tmp_dir("sigint_report");
+  const std::string dir = scratch_dir("sigint_report");
   const std::string gp = hanging_gnuplot(dir);
   const std::string study = dir + "/sweep.yaml";
   std::ofstream(study) << "study: {name: small sweep, kind: sweep, seed: 3}\n"
@@ -283,7 +214,7 @@ TEST(OutputGuarantees, CtrlCAfterTheLastEvaluationExits130) {
                        << "report: [contact_ratio]\n"
                        << "sweep: {method: grid, levels: 3}\n"
                        << "output: {plots: on, report: on, stiffness_curve: off}\n";
-  const pid_t pid = start("run '" + study + "' --json --out " + dir + "/out", dir, "RACKOPT_GNUPLOT='" + gp + "'");
+  const pid_t pid = start("run '" + study + "' --json --out " + dir + "/out", dir, {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   const bool plotting = wait_for_file(dir + "/gnuplot.pid", 60);
   kill(pid, SIGINT);
   const CliResult r = finish(pid, dir);
@@ -291,19 +222,19 @@ TEST(OutputGuarantees, CtrlCAfterTheLastEvaluationExits130) {
   EXPECT_EQ(r.code, 130) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["evaluations"], 3);
-  EXPECT_EQ(j, nlohmann::json::parse(slurp(dir + "/out/summary.json")));
+  EXPECT_EQ(j, nlohmann::json::parse(read_text(dir + "/out/summary.json")));
   EXPECT_FALSE(fs::exists(dir + "/out/sweep.png"));
   bool named = false;
   for (const auto& w : j["warnings"]) named = named || w.get<std::string>().find("sweep.png not drawn") != std::string::npos;
   EXPECT_TRUE(named) << j["warnings"];
   EXPECT_TRUE(leftovers(dir + "/out").empty());
-  kill(std::stoi(slurp(dir + "/gnuplot.pid")), SIGKILL);
+  kill(std::stoi(read_text(dir + "/gnuplot.pid")), SIGKILL);
 }
 
 // Ctrl-C during one long Monte Carlo evaluation (a million samples and their
 // distribution fit, 90 to 160 s on one thread) ends within seconds.
 TEST(OutputGuarantees, CtrlCDuringALongMonteCarloEndsPromptly) {
-  const std::string dir = tmp_dir("sigint_wear");
+  const std::string dir = scratch_dir("sigint_wear");
   const pid_t pid = start("wear problems/ship_lift.yaml --samples 1000000 --threads 1 --json --out " + dir + "/out", dir);
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   const auto t0 = Clock::now();
@@ -320,8 +251,7 @@ TEST(OutputGuarantees, CtrlCDuringALongMonteCarloEndsPromptly) {
   // recorded until it ends) is abandoned at once, everything the store
   // committed stays, and nothing partial is published.
   const pid_t study = start("run studies/ship_lift_reliability.yaml --set metric_options.reliability_samples=1000000 "
-                            "--threads 1 --json --out " + dir + "/study",
-                            dir);
+                            "--threads 1 --json --out " + dir + "/study", dir);
   std::this_thread::sleep_for(std::chrono::milliseconds(2500));
   const auto t1 = Clock::now();
   kill(study, SIGINT);
@@ -335,14 +265,13 @@ TEST(OutputGuarantees, CtrlCDuringALongMonteCarloEndsPromptly) {
 }
 
 TEST(OutputGuarantees, FolderInUseIsExitTwoWithAJsonError) {
-  const std::string dir = tmp_dir("in_use");
+  const std::string dir = scratch_dir("in_use");
   const std::string gp = hanging_gnuplot(dir);
   const std::string first = dir + "/first";
   fs::create_directories(first);
-  const pid_t pid = start("stiffness problems/rack_railway.yaml --out " + dir + "/out", first,
-                          "RACKOPT_GNUPLOT='" + gp + "'");
+  const pid_t pid = start("stiffness problems/rack_railway.yaml --out " + dir + "/out", first, {.env = "RACKOPT_GNUPLOT='" + gp + "'"});
   const bool holding = wait_for_file(dir + "/gnuplot.pid", 60);
-  const CliResult second = run("stiffness problems/rack_railway.yaml --json --out " + dir + "/out", dir);
+  const CliResult second = run_cli("stiffness problems/rack_railway.yaml --json --out " + dir + "/out");
   kill(pid, SIGINT);
   finish(pid, first);
   ASSERT_TRUE(holding);
@@ -353,18 +282,18 @@ TEST(OutputGuarantees, FolderInUseIsExitTwoWithAJsonError) {
   EXPECT_NE(j["message"].get<std::string>().find("in use by another rackopt run (pid " + std::to_string(pid) + ")"),
             std::string::npos)
       << j;
-  kill(std::stoi(slurp(dir + "/gnuplot.pid")), SIGKILL);
+  kill(std::stoi(read_text(dir + "/gnuplot.pid")), SIGKILL);
 }
 
 TEST(OutputGuarantees, ResumeRemovesStaleTemporaryFiles) {
-  const std::string dir = tmp_dir("stale");
+  const std::string dir = scratch_dir("stale");
   const std::string study = dir + "/tiny.yaml";
   std::ofstream(study) << "study: {name: tiny, kind: evaluate}\n"
                        << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
                        << "report: [contact_ratio]\n"
                        << "output: {plots: off}\n";
   const std::string out = dir + "/out";
-  ASSERT_EQ(run("run '" + study + "' --out " + out, dir).code, 0);
+  ASSERT_EQ(run_cli("run '" + study + "' --out " + out).code, 0);
   // What a kill -9 in the middle of writes leaves: our writers' temporaries.
   const std::vector<std::string> stale = {"summary.json.tmp.4194000", "report.md.tmp.1", "history.png.tmp",
                                           ".evaluations.csv.tmpAb3dE9"};
@@ -372,7 +301,7 @@ TEST(OutputGuarantees, ResumeRemovesStaleTemporaryFiles) {
   // Files that merely look alike are not ours and stay.
   const std::vector<std::string> kept = {"notes.tmp.txt", "summary.json.tmp.12a", "my.tmp"};
   for (const auto& name : kept) std::ofstream(out + "/" + name) << "mine";
-  const CliResult r = run("run '" + study + "' --resume --out " + out, dir);
+  const CliResult r = run_cli("run '" + study + "' --resume --out " + out);
   ASSERT_EQ(r.code, 0) << r.err;
   for (const auto& name : stale) {
     EXPECT_FALSE(fs::exists(out + "/" + name)) << name;
@@ -382,27 +311,26 @@ TEST(OutputGuarantees, ResumeRemovesStaleTemporaryFiles) {
 }
 
 TEST(OutputGuarantees, OptionsThatDoNotApplyAreUsageErrors) {
-  const std::string dir = tmp_dir("options");
-  const CliResult check = run("check problems/rack_railway.yaml --samples 10", dir);
+  const std::string dir = scratch_dir("options");
+  const CliResult check = run_cli("check problems/rack_railway.yaml --samples 10");
   EXPECT_EQ(check.code, 2);
   EXPECT_NE(check.err.find("option --samples does not apply to 'check'"), std::string::npos) << check.err;
-  const CliResult stiff = run("stiffness problems/rack_railway.yaml --resume --out " + dir + "/s", dir);
+  const CliResult stiff = run_cli("stiffness problems/rack_railway.yaml --resume --out " + dir + "/s");
   EXPECT_EQ(stiff.code, 2);
   EXPECT_NE(stiff.err.find("option --resume does not apply to 'stiffness'"), std::string::npos) << stiff.err;
   EXPECT_FALSE(fs::exists(dir + "/s"));  // refused before anything was done
-  EXPECT_EQ(run("wear problems/ship_lift.yaml --progress --out " + dir + "/w", dir).code, 2);
-  EXPECT_EQ(run("run studies/rack_railway_sizing.yaml --samples=5 --out " + dir + "/r", dir).code, 2);
-  EXPECT_EQ(run("check problems/rack_railway.yaml --out=" + dir + "/c", dir).code, 2);
+  EXPECT_EQ(run_cli("wear problems/ship_lift.yaml --progress --out " + dir + "/w").code, 2);
+  EXPECT_EQ(run_cli("run studies/rack_railway_sizing.yaml --samples=5 --out " + dir + "/r").code, 2);
+  EXPECT_EQ(run_cli("check problems/rack_railway.yaml --out=" + dir + "/c").code, 2);
   // Options a command does accept still work.
-  EXPECT_EQ(run("check problems/rack_railway.yaml --set 'rack.span=1.2 m' --json", dir).code, 0);
+  EXPECT_EQ(run_cli("check problems/rack_railway.yaml --set 'rack.span=1.2 m' --json").code, 0);
 }
 
 TEST(OutputGuarantees, UsageErrorsPrintOneJsonObjectWithJson) {
-  const std::string dir = tmp_dir("usage_json");
   for (const std::string args : {"check problems/rack_railway.yaml --json --samples 3", "frobnicate x --json",
                                  "stiffness --json", "stiffness problems/rack_railway.yaml --json --bogus",
                                  "wear problems/ship_lift.yaml --json --samples 0"}) {
-    const CliResult r = run(args, dir);
+    const CliResult r = run_cli(args);
     EXPECT_EQ(r.code, 2) << args;
     const auto j = nlohmann::json::parse(r.out);  // exactly one JSON value
     EXPECT_EQ(j, (nlohmann::json{{"ok", false}, {"error", "usage"}, {"message", j["message"]}})) << args;
@@ -414,7 +342,7 @@ TEST(OutputGuarantees, UsageErrorsPrintOneJsonObjectWithJson) {
 // running it says the total is a budget, at the end it shows count/count and
 // no time left, and no line is wider than COLUMNS - 1.
 TEST(OutputGuarantees, ProgressLineEndsDoneAndFitsTheTerminal) {
-  const std::string dir = tmp_dir("progress");
+  const std::string dir = scratch_dir("progress");
   const std::string study = dir + "/sweep.yaml";
   std::ofstream(study) << "study: {name: progress sweep, kind: sweep, seed: 3}\n"
                        << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
@@ -424,7 +352,7 @@ TEST(OutputGuarantees, ProgressLineEndsDoneAndFitsTheTerminal) {
                        << "objectives:\n  - {metric: stiffness_fluctuation, scale: 1}\n"
                        << "sweep: {method: grid, levels: 14}\n"
                        << "output: {plots: off, report: off, stiffness_curve: off}\n";
-  const CliResult r = run("run '" + study + "' --progress --threads 1 --out " + dir + "/out", dir, "COLUMNS=52");
+  const CliResult r = run_cli("run '" + study + "' --progress --threads 1 --out " + dir + "/out", {.env = "COLUMNS=52"});
   ASSERT_EQ(r.code, 0) << r.err;
   std::vector<std::string> lines;
   std::string cur;

@@ -6,15 +6,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,75 +19,25 @@
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/study_spec.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
+#include "support/cli_process.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int code = -1;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string tmp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("rackopt_run_cli_test_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-// Each test process writes under its own folder (a normal and a sanitizer
-// build, or two checkouts, may run these at once) and removes it at the end.
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_run_cli_test_" + std::to_string(::getpid())), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
-
-// Runs the CLI with `args` (shell words) from the source directory.
-CliResult run(const std::string& args, const std::string& scratch) {
-  const std::string err_file = scratch + "/stderr.txt";
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args + " 2>'" +
-                          err_file + "'";
-  CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = slurp(err_file);
-  return r;
-}
-
-// Starts the CLI in the background with stdout/stderr to files; returns its pid.
-pid_t start(const std::string& args, const std::string& out_file, const std::string& err_file) {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && exec '" + RACKOPT_CLI + "' " + args +
-                          " >'" + out_file + "' 2>'" + err_file + "'";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  return pid;
-}
+using rackopt::test_support::CliResult;
+using rackopt::test_support::read_text;
+using rackopt::test_support::run_cli;
+using rackopt::test_support::scratch_dir;
+using rackopt::test_support::start_cli;
+using rackopt::test_support::wait_exit;
 
 // Largest "N/M evaluations" count the progress bar has drawn so far.
 long progress_done(const std::string& err_file) {
   // (no std::regex: GCC 12 warns inside it under the sanitizer build)
-  const std::string text = slurp(err_file);
+  const std::string text = read_text(err_file);
   long best = 0;
   for (std::size_t at = text.find(" evaluations"); at != std::string::npos; at = text.find(" evaluations", at + 1)) {
     std::size_t slash = at;
@@ -114,14 +61,6 @@ bool wait_for_progress(pid_t pid, const std::string& err_file, long done) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return false;
-}
-
-int wait_exit(pid_t pid) {
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return -1;
 }
 
 // A 20 x 20 grid sweep on the rack railway paper's problem with a fine travel sampling
@@ -159,8 +98,8 @@ void expect_store_complete(const std::string& study_file, const std::string& out
 }
 
 TEST(RunCli, ShippedSizingStudyPrintsTheSummaryObject) {
-  const std::string dir = tmp_dir("sizing");
-  const CliResult r = run("run studies/rack_railway_sizing.yaml --json --out " + dir + "/out", dir);
+  const std::string dir = scratch_dir("sizing");
+  const CliResult r = run_cli("run studies/rack_railway_sizing.yaml --json --out " + dir + "/out");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);  // exactly one JSON value on stdout
   EXPECT_EQ(j["kind"], "optimize");
@@ -181,7 +120,7 @@ TEST(RunCli, ShippedSizingStudyPrintsTheSummaryObject) {
   EXPECT_EQ(j["reused_evaluations"], 0);
   EXPECT_GT(j["timings"]["seconds"].get<double>(), 0.0);
   // What --json printed is summary.json.
-  EXPECT_EQ(j, nlohmann::json::parse(slurp(dir + "/out/summary.json")));
+  EXPECT_EQ(j, nlohmann::json::parse(read_text(dir + "/out/summary.json")));
   for (const auto& [role, path] : j["files"].items()) EXPECT_TRUE(fs::exists(path.get<std::string>())) << role;
   EXPECT_TRUE(j["files"].contains("database"));
   EXPECT_TRUE(j["files"].contains("best_csv"));
@@ -190,28 +129,28 @@ TEST(RunCli, ShippedSizingStudyPrintsTheSummaryObject) {
 }
 
 TEST(RunCli, BadStudyFileIsExit2WithFileLineColumn) {
-  const std::string dir = tmp_dir("bad");
+  const std::string dir = scratch_dir("bad");
   const std::string path = dir + "/bad.yaml";
   std::ofstream(path) << "study: {name: bad, kind: optimize}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
                       << "variables:\n"
                       << "  rack.span: {lower: 3 m, upper: 1.2 m}\n"
                       << "objectives: [stiffness_fluctuation]\n";
-  const CliResult r = run("run '" + path + "' --json --out " + dir + "/out", dir);
+  const CliResult r = run_cli("run '" + path + "' --json --out " + dir + "/out");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("bad.yaml:4:"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j["ok"].get<bool>());
   EXPECT_EQ(j["error"], "input");
 
-  const CliResult missing = run("run '" + dir + "/nothing.yaml' --out " + dir + "/out2", dir);
+  const CliResult missing = run_cli("run '" + dir + "/nothing.yaml' --out " + dir + "/out2");
   EXPECT_EQ(missing.code, 2);
-  const CliResult unknown_set = run("run '" + path + "' --set solver.no_such_key=3 --out " + dir + "/out3", dir);
+  const CliResult unknown_set = run_cli("run '" + path + "' --set solver.no_such_key=3 --out " + dir + "/out3");
   EXPECT_EQ(unknown_set.code, 2);
 }
 
 TEST(RunCli, NoFeasiblePointExitsZeroAndShowsTheLeastInfeasibleDesign) {
-  const std::string dir = tmp_dir("infeasible");
+  const std::string dir = scratch_dir("infeasible");
   const std::string path = dir + "/infeasible.yaml";
   std::ofstream(path) << "study: {name: impossible, kind: optimize}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
@@ -219,7 +158,7 @@ TEST(RunCli, NoFeasiblePointExitsZeroAndShowsTheLeastInfeasibleDesign) {
                       << "objectives: [stiffness_fluctuation]\n"
                       << "constraints:\n  - {metric: contact_ratio, min: 5}\n"
                       << "solver: {algorithm: LN_COBYLA, max_evaluations: 15}\n";
-  const CliResult r = run("run '" + path + "' --json --out " + dir + "/out", dir);
+  const CliResult r = run_cli("run '" + path + "' --json --out " + dir + "/out");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["status"], "no_feasible_point");
@@ -230,18 +169,18 @@ TEST(RunCli, NoFeasiblePointExitsZeroAndShowsTheLeastInfeasibleDesign) {
 }
 
 TEST(RunCli, KillNineThenResumeLosesNothingAndRepeatsNothing) {
-  const std::string dir = tmp_dir("kill");
+  const std::string dir = scratch_dir("kill");
   const std::string study = write_sweep_study(dir);
 
   // Reference: uninterrupted, in its own folder.
-  const CliResult ref = run("run '" + study + "' --json --threads 2 --out " + dir + "/ref", dir);
+  const CliResult ref = run_cli("run '" + study + "' --json --threads 2 --out " + dir + "/ref");
   ASSERT_EQ(ref.code, 0) << ref.err;
   const auto jref = nlohmann::json::parse(ref.out);
   ASSERT_EQ(jref["evaluations"], kSweepSize);
   ASSERT_TRUE(jref["best"].is_object());
 
   const std::string out = dir + "/run";
-  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+  const pid_t pid = start_cli("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
                           dir + "/e1.txt");
   ASSERT_GT(pid, 0);
   const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 60);
@@ -250,7 +189,7 @@ TEST(RunCli, KillNineThenResumeLosesNothingAndRepeatsNothing) {
   ASSERT_TRUE(mid_run) << "the sweep ended before it could be killed (exit " << code << ")";
   EXPECT_EQ(code, 128 + SIGKILL);
 
-  const CliResult resumed = run("run '" + study + "' --json --resume --threads 2 --out " + out, dir);
+  const CliResult resumed = run_cli("run '" + study + "' --json --resume --threads 2 --out " + out);
   ASSERT_EQ(resumed.code, 0) << resumed.err;
   const auto j = nlohmann::json::parse(resumed.out);
   EXPECT_EQ(j["status"], "ok");
@@ -260,15 +199,15 @@ TEST(RunCli, KillNineThenResumeLosesNothingAndRepeatsNothing) {
   EXPECT_EQ(j["best"], jref["best"]);
   EXPECT_EQ(j["sweep_points"], jref["sweep_points"]);
   EXPECT_EQ(j["feasible_points"], jref["feasible_points"]);
-  EXPECT_EQ(slurp(out + "/sweep.csv"), slurp(dir + "/ref/sweep.csv"));
+  EXPECT_EQ(read_text(out + "/sweep.csv"), read_text(dir + "/ref/sweep.csv"));
   expect_store_complete(study, out);
 }
 
 TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
-  const std::string dir = tmp_dir("sigint");
+  const std::string dir = scratch_dir("sigint");
   const std::string study = write_sweep_study(dir);
   const std::string out = dir + "/run";
-  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+  const pid_t pid = start_cli("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
                           dir + "/e1.txt");
   ASSERT_GT(pid, 0);
   const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 40);
@@ -276,16 +215,16 @@ TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
   const int code = wait_exit(pid);
   ASSERT_TRUE(mid_run) << "the sweep ended before it could be interrupted (exit " << code << ")";
   EXPECT_EQ(code, 130);
-  const auto stopped = nlohmann::json::parse(slurp(dir + "/o1.txt"));
+  const auto stopped = nlohmann::json::parse(read_text(dir + "/o1.txt"));
   EXPECT_EQ(stopped["status"], "stopped");
   EXPECT_NE(stopped["message"].get<std::string>().find("--resume"), std::string::npos);
   EXPECT_LT(stopped["evaluations"].get<long>(), static_cast<long>(kSweepSize));
   EXPECT_GT(stopped["evaluations"].get<long>(), 0);
   EXPECT_TRUE(fs::exists(out + "/summary.json"));
   EXPECT_TRUE(fs::exists(out + "/report.md"));
-  EXPECT_NE(slurp(dir + "/e1.txt").find("--resume"), std::string::npos);
+  EXPECT_NE(read_text(dir + "/e1.txt").find("--resume"), std::string::npos);
 
-  const CliResult resumed = run("run '" + study + "' --json --resume --out " + out, dir);
+  const CliResult resumed = run_cli("run '" + study + "' --json --resume --out " + out);
   ASSERT_EQ(resumed.code, 0) << resumed.err;
   const auto j = nlohmann::json::parse(resumed.out);
   EXPECT_EQ(j["status"], "ok");
@@ -323,9 +262,9 @@ std::string warnings_section(const std::string& md) {
 }
 
 TEST(RunCli, ResumedRunReportsTheWarningsOfAnUninterruptedOne) {
-  const std::string dir = tmp_dir("warnings");
+  const std::string dir = scratch_dir("warnings");
   const std::string study = write_undercut_first_study(dir);
-  const CliResult ref = run("run '" + study + "' --json --threads 2 --out " + dir + "/ref", dir);
+  const CliResult ref = run_cli("run '" + study + "' --json --threads 2 --out " + dir + "/ref");
   ASSERT_EQ(ref.code, 0) << ref.err;
   const auto jref = nlohmann::json::parse(ref.out);
   std::size_t undercut = 0;
@@ -335,7 +274,7 @@ TEST(RunCli, ResumedRunReportsTheWarningsOfAnUninterruptedOne) {
 
   // Stopped (Ctrl-C flushes every evaluation) after the undercut designs.
   const std::string out = dir + "/run";
-  const pid_t pid = start("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+  const pid_t pid = start_cli("run '" + study + "' --json --progress --threads 1 --out " + out, dir + "/o1.txt",
                           dir + "/e1.txt");
   ASSERT_GT(pid, 0);
   const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", 88);
@@ -343,11 +282,11 @@ TEST(RunCli, ResumedRunReportsTheWarningsOfAnUninterruptedOne) {
   const int code = wait_exit(pid);
   ASSERT_TRUE(mid_run) << "the sweep ended before it could be interrupted (exit " << code << ")";
   ASSERT_EQ(code, 130);
-  const auto stopped = nlohmann::json::parse(slurp(dir + "/o1.txt"));
+  const auto stopped = nlohmann::json::parse(read_text(dir + "/o1.txt"));
   ASSERT_GE(stopped["evaluations"].get<long>(), 80);
   ASSERT_LT(stopped["evaluations"].get<long>(), static_cast<long>(kSweepSize));
 
-  const CliResult resumed = run("run '" + study + "' --json --resume --out " + out, dir);
+  const CliResult resumed = run_cli("run '" + study + "' --json --resume --out " + out);
   ASSERT_EQ(resumed.code, 0) << resumed.err;
   const auto j = nlohmann::json::parse(resumed.out);
   EXPECT_EQ(j["reused_evaluations"], stopped["evaluations"]);
@@ -357,28 +296,28 @@ TEST(RunCli, ResumedRunReportsTheWarningsOfAnUninterruptedOne) {
   EXPECT_EQ(j["warnings"], jref["warnings"]);
   ASSERT_TRUE(j["best"].is_object());
   EXPECT_EQ(j["best"]["warnings"], jref["best"]["warnings"]);
-  const auto on_disk = nlohmann::json::parse(slurp(out + "/summary.json"));
+  const auto on_disk = nlohmann::json::parse(read_text(out + "/summary.json"));
   EXPECT_EQ(on_disk["warnings"], jref["warnings"]);
-  const std::string section = warnings_section(slurp(out + "/report.md"));
+  const std::string section = warnings_section(read_text(out + "/report.md"));
   EXPECT_NE(section.find("pinion undercut"), std::string::npos) << section;
-  EXPECT_EQ(section, warnings_section(slurp(dir + "/ref/report.md")));
+  EXPECT_EQ(section, warnings_section(read_text(dir + "/ref/report.md")));
 }
 
 TEST(RunCli, UsedFolderWithoutResumeIsRefused) {
-  const std::string dir = tmp_dir("reuse");
+  const std::string dir = scratch_dir("reuse");
   const std::string path = dir + "/tiny.yaml";
   std::ofstream(path) << "study: {name: tiny, kind: evaluate}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
                       << "report: [contact_ratio]\n";
-  ASSERT_EQ(run("run '" + path + "' --out " + dir + "/out", dir).code, 0);
-  const CliResult again = run("run '" + path + "' --out " + dir + "/out", dir);
+  ASSERT_EQ(run_cli("run '" + path + "' --out " + dir + "/out").code, 0);
+  const CliResult again = run_cli("run '" + path + "' --out " + dir + "/out");
   EXPECT_EQ(again.code, 2);  // a user decision, like bad input: --resume or another --out
   EXPECT_NE(again.err.find("--resume"), std::string::npos) << again.err;
   // Another study in the same folder is refused the same way.
   std::ofstream(path) << "study: {name: tiny, kind: evaluate}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
                       << "report: [contact_ratio, supports_per_metre]\n";
-  const CliResult other = run("run '" + path + "' --out " + dir + "/out --resume", dir);
+  const CliResult other = run_cli("run '" + path + "' --out " + dir + "/out --resume");
   EXPECT_EQ(other.code, 2);
   EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
 }

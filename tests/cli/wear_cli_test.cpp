@@ -1,14 +1,9 @@
 // `rackopt wear` end to end, and the wear paper's validation: the
 // shipped ship_lift problem reproduces the paper's reliability table
 // (docs/models/reliability.md) within 0.05 and its 1000 lives pass the gamma fit at 5 %.
-#include <unistd.h>
-
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -17,43 +12,16 @@
 #include <sstream>
 #include <string>
 
+#include "support/cli_process.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
+
 namespace {
 
-struct CliResult {
-  int code = -1;
-  std::string out;
-};
-
-CliResult run(const std::string& args) {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args +
-                          " 2>/dev/null";
-  CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-std::string tmp_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rackopt_wear_cli_test_" + std::to_string(::getpid())) / name;
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-
-// Each test process writes under its own folder (a normal and a sanitizer
-// build, or two checkouts, may run these at once) and removes it at the end.
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / ("rackopt_wear_cli_test_" + std::to_string(::getpid())), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
+using rackopt::test_support::CliResult;
+using rackopt::test_support::read_text;
+using rackopt::test_support::run_cli;
+using rackopt::test_support::scratch_path;
 
 // The wear paper's reliability table (docs/models/reliability.md). The 40-year row is not in
 // the +-0.05 requirement (it is inconsistent with any fitted distribution);
@@ -61,8 +29,8 @@ class RemoveTmpRoot : public ::testing::Environment {
 const std::map<double, double> kWearPaperR{{55, 0.9743}, {60, 0.7949}, {65, 0.4054}, {75, 0.0135}};
 
 TEST(WearCli, WearPaperShipLiftReproducesThePapersReliabilityTable) {
-  const std::string dir = tmp_dir("wear_paper");
-  const CliResult r = run("wear problems/ship_lift.yaml --json --out " + dir);
+  const std::string dir = scratch_path("wear_paper");
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --json --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"life_cycles", "life_years", "life_at_R", "reliability", "fit", "timings"}) {
@@ -134,8 +102,8 @@ TEST(WearCli, WearPaperShipLiftReproducesThePapersReliabilityTable) {
 }
 
 TEST(WearCli, SamplesAndSeedOptionsAreReproducible) {
-  const CliResult a = run("wear problems/ship_lift.yaml --json --samples 50 --seed 7 --threads 1 --out " + tmp_dir("a"));
-  const CliResult b = run("wear problems/ship_lift.yaml --json --samples 50 --seed 7 --threads 2 --out " + tmp_dir("b"));
+  const CliResult a = run_cli("wear problems/ship_lift.yaml --json --samples 50 --seed 7 --threads 1 --out " + scratch_path("a"));
+  const CliResult b = run_cli("wear problems/ship_lift.yaml --json --samples 50 --seed 7 --threads 2 --out " + scratch_path("b"));
   ASSERT_EQ(a.code, 0);
   ASSERT_EQ(b.code, 0);
   const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
@@ -143,21 +111,21 @@ TEST(WearCli, SamplesAndSeedOptionsAreReproducible) {
   EXPECT_EQ(ja["life_at_R"], jb["life_at_R"]);
   EXPECT_EQ(ja["seed"].get<long>(), 7);  // the seed in effect, not the problem's
   EXPECT_EQ(ja["samples"].get<long>(), 50);
-  const CliResult c = run("wear problems/ship_lift.yaml --json --samples 50 --seed 8 --out " + tmp_dir("c"));
+  const CliResult c = run_cli("wear problems/ship_lift.yaml --json --samples 50 --seed 8 --out " + scratch_path("c"));
   ASSERT_EQ(c.code, 0);
   EXPECT_NE(ja["reliability"], nlohmann::json::parse(c.out)["reliability"]);
 }
 
 TEST(WearCli, ProblemWithoutWearIsBadInput) {
-  const CliResult r = run("wear problems/rack_railway.yaml --out " + tmp_dir("nowear"));
+  const CliResult r = run_cli("wear problems/rack_railway.yaml --out " + scratch_path("nowear"));
   EXPECT_EQ(r.code, 2);
 }
 
 TEST(WearCli, ContactRatioSampledBelowOneFailsThoseSamplesOnly) {
   // Mean 1.05 (1.536 - 0.486): about a third of the samples start below 1
   // and fail at once; the run still completes and reports them.
-  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random[0].shift=-0.486' "
-                          "--set 'reliability.random[0].sd=0.1' --out " + tmp_dir("below1"));
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random[0].shift=-0.486' "
+                          "--set 'reliability.random[0].sd=0.1' --out " + scratch_path("below1"));
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["immediate_failures"].get<long>(), 50);
@@ -169,9 +137,9 @@ TEST(WearCli, ContactRatioSampledBelowOneFailsThoseSamplesOnly) {
 // 58.46 y when the contact ratio was an absolute N(1.44, 0.038));
 // tests/life/design_scatter_test.cpp checks the amount independently.
 TEST(WearCli, ClearanceMovesTheLifeAtR) {
-  const CliResult a = run("wear problems/ship_lift.yaml --json --samples 100 --out " + tmp_dir("clear0"));
-  const CliResult b = run("wear problems/ship_lift.yaml --json --samples 100 --set mounting.clearance='4 mm' --out " +
-                          tmp_dir("clear4"));
+  const CliResult a = run_cli("wear problems/ship_lift.yaml --json --samples 100 --out " + scratch_path("clear0"));
+  const CliResult b = run_cli("wear problems/ship_lift.yaml --json --samples 100 --set mounting.clearance='4 mm' --out " +
+                          scratch_path("clear4"));
   ASSERT_EQ(a.code, 0);
   ASSERT_EQ(b.code, 0);
   const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
@@ -181,19 +149,6 @@ TEST(WearCli, ClearanceMovesTheLifeAtR) {
   EXPECT_LT(t4, jb["life_years"].get<double>());
 }
 
-CliResult run_with_stderr(const std::string& args) {
-  const std::string cmd = std::string("cd '") + RACKOPT_SOURCE_DIR + "' && '" + RACKOPT_CLI + "' " + args + " 2>&1";
-  CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 // An absolute contact ratio and a --set of the clearance: the life at R
 // would ignore the clearance, so it is bad input (exit 2) naming both keys,
 // for wear and for stiffness alike.
@@ -201,19 +156,14 @@ TEST(WearCli, AbsoluteInputWithAnOverrideThatMovesItIsBadInput) {
   const std::string absolute = " --set 'reliability.random[0]={input: contact_ratio, distribution: normal, "
                                "absolute: true, mean: 1.44, sd: 0.038}'";
   for (const char* command : {"wear", "stiffness"}) {
-    const CliResult r = run_with_stderr(std::string(command) + " problems/ship_lift.yaml" + absolute +
-                                        " --set mounting.clearance='4 mm' --out " + tmp_dir("abs"));
+    const CliResult r = run_cli(std::string(command) + " problems/ship_lift.yaml" + absolute +
+                                        " --set mounting.clearance='4 mm' --out " + scratch_path("abs"), {.merge_stderr = true});
     EXPECT_EQ(r.code, 2) << r.out;
     EXPECT_NE(r.out.find("mounting.clearance"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("reliability.random[0]"), std::string::npos) << r.out;
   }
-  const CliResult ok = run("wear problems/ship_lift.yaml --json --samples 20" + absolute + " --out " + tmp_dir("abs_ok"));
+  const CliResult ok = run_cli("wear problems/ship_lift.yaml --json --samples 20" + absolute + " --out " + scratch_path("abs_ok"));
   EXPECT_EQ(ok.code, 0);
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 long count_containing(const nlohmann::json& warnings, const std::string& part) {
@@ -228,8 +178,8 @@ long count_containing(const nlohmann::json& warnings, const std::string& part) {
 // life_samples.csv holds no inf or nan (the infinite inputs are failed
 // samples with an empty value and a message).
 TEST(WearCli, ContactRatioZeroFailsAtOnceAndNoInfinityReachesTheFiles) {
-  const std::string dir = tmp_dir("zero_eps");
-  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random=[{input: "
+  const std::string dir = scratch_path("zero_eps");
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --json --samples 200 --set 'reliability.random=[{input: "
                           "contact_ratio, distribution: weibull, scale: 1.4, shape: 0.001, absolute: true}]' --out " + dir);
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
@@ -277,8 +227,8 @@ TEST(WearCli, ContactRatioZeroFailsAtOnceAndNoInfinityReachesTheFiles) {
 // run goes on like the load and the coefficient (it exited 2).
 TEST(WearCli, NonPositiveHardnessSamplesFailAndTheRunGoesOn) {
   for (const char* key : {"surface_hardness", "load", "wear_coefficient"}) {
-    const CliResult r = run(std::string("wear problems/ship_lift.yaml --json --samples 400 --set 'reliability.random=[{input: ") +
-                            key + ", distribution: normal, cv: 0.5}]' --out " + tmp_dir(std::string("neg_") + key));
+    const CliResult r = run_cli(std::string("wear problems/ship_lift.yaml --json --samples 400 --set 'reliability.random=[{input: ") +
+                            key + ", distribution: normal, cv: 0.5}]' --out " + scratch_path(std::string("neg_") + key));
     ASSERT_EQ(r.code, 0) << key << r.out;
     const auto j = nlohmann::json::parse(r.out);
     const long failed = j["failed_evaluations"].get<long>();
@@ -296,9 +246,9 @@ TEST(WearCli, NonPositiveHardnessSamplesFailAndTheRunGoesOn) {
 // Every sampled contact ratio above the largest the pair can have: exit 0,
 // the status and one clear warning, life 0 at every R, no internal message.
 TEST(WearCli, EveryContactRatioOutOfRangeIsReportedNotAnError) {
-  const CliResult r = run_with_stderr("wear problems/ship_lift.yaml --json --samples 100 --set "
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --json --samples 100 --set "
                                       "'reliability.random[0].shift=0.5' --set 'reliability.random[0].sd=0.01' --out " +
-                                      tmp_dir("all_out"));
+                                      scratch_path("all_out"), {.merge_stderr = true});
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_EQ(r.out.find("strictly inside"), std::string::npos) << r.out;
   const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
@@ -307,8 +257,8 @@ TEST(WearCli, EveryContactRatioOutOfRangeIsReportedNotAnError) {
   EXPECT_EQ(j["exact"]["failed_at_start"].get<double>(), 1.0);
   for (const auto& [R, years] : j["life_at_R"].items()) EXPECT_EQ(years.get<double>(), 0.0) << R;
   // [eps] above eps_max: the probability of failing at once is 1, not more.
-  const CliResult m = run("wear problems/ship_lift.yaml --json --samples 50 --set wear.min_contact_ratio=1.6 --out " +
-                          tmp_dir("min_above_max"));
+  const CliResult m = run_cli("wear problems/ship_lift.yaml --json --samples 50 --set wear.min_contact_ratio=1.6 --out " +
+                          scratch_path("min_above_max"));
   ASSERT_EQ(m.code, 0) << m.out;
   EXPECT_EQ(nlohmann::json::parse(m.out)["exact"]["failed_at_start"].get<double>(), 1.0);
 }
@@ -317,8 +267,8 @@ TEST(WearCli, EveryContactRatioOutOfRangeIsReportedNotAnError) {
 // (the evaluation at R = 0.9 does not): it finishes with its summary (it
 // stopped with exit 2 after the evaluation was recorded, and no summary).
 TEST(WearCli, ReliabilityStudyWithFailedSamplesFinishesWithItsSummary) {
-  const std::string out = tmp_dir("study");
-  const CliResult r = run("run studies/ship_lift_reliability.yaml --json --set 'problem.reliability.random=[{input: "
+  const std::string out = scratch_path("study");
+  const CliResult r = run_cli("run studies/ship_lift_reliability.yaml --json --set 'problem.reliability.random=[{input: "
                           "surface_hardness, distribution: normal, cv: 0.5}]' --set metric_options.reliability_samples=400 "
                           "--out " + out);
   ASSERT_EQ(r.code, 0) << r.out;
@@ -333,9 +283,9 @@ TEST(WearCli, ReliabilityStudyWithFailedSamplesFinishesWithItsSummary) {
 // 4 mm clearance) gives a life at R = 0.9 above the nominal life: a warning
 // in the output.
 TEST(WearCli, LifeAtRAboveTheNominalLifeIsAWarning) {
-  const CliResult r = run("wear problems/ship_lift.yaml --json --samples 200 --set mounting.clearance='4 mm' "
+  const CliResult r = run_cli("wear problems/ship_lift.yaml --json --samples 200 --set mounting.clearance='4 mm' "
                           "--set 'reliability.random[0]={input: contact_ratio, distribution: normal, shift: 0.05, "
-                          "sd: 0.005}' --out " + tmp_dir("warn"));
+                          "sd: 0.005}' --out " + scratch_path("warn"));
   ASSERT_EQ(r.code, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["exact"]["life_at_R"]["0.9"].get<double>(), j["life_years"].get<double>());
@@ -343,7 +293,7 @@ TEST(WearCli, LifeAtRAboveTheNominalLifeIsAWarning) {
   for (const auto& w : j["warnings"]) warned |= w.get<std::string>().find("above the nominal wear life") != std::string::npos;
   EXPECT_TRUE(warned) << j["warnings"].dump();
   // The shipped scatter (shifted below the design) does not warn.
-  const CliResult s = run("wear problems/ship_lift.yaml --json --samples 200 --out " + tmp_dir("nowarn"));
+  const CliResult s = run_cli("wear problems/ship_lift.yaml --json --samples 200 --out " + scratch_path("nowarn"));
   ASSERT_EQ(s.code, 0);
   const auto js = nlohmann::json::parse(s.out);  // a named object: the loop must not outlive it
   for (const auto& w : js["warnings"])

@@ -7,31 +7,20 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "rackopt/core/atomic_file.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("rackopt_atomic_" + std::to_string(::getpid())) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d.string();
-}
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::read_text;
+using test_support::scratch_dir;
 
 std::size_t files_in(const std::string& dir) {
   std::size_t n = 0;
@@ -40,28 +29,28 @@ std::size_t files_in(const std::string& dir) {
 }
 
 TEST(AtomicFile, WritesTheContentReadableAndLeavesNoTemporary) {
-  const std::string dir = fresh_dir("ok");
+  const std::string dir = scratch_dir("ok");
   const std::string path = dir + "/sub/table.csv";  // the parent is created
   write_file_atomically(path, "a,b\n1,2\n");
-  EXPECT_EQ(read(path), "a,b\n1,2\n");
+  EXPECT_EQ(read_text(path), "a,b\n1,2\n");
   struct stat st{};
   ASSERT_EQ(::stat(path.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0644u);
   EXPECT_EQ(files_in(dir + "/sub"), 1u);
   // Replacing keeps one file with the new content.
   write_file_atomically(path, "x\n");
-  EXPECT_EQ(read(path), "x\n");
+  EXPECT_EQ(read_text(path), "x\n");
   EXPECT_EQ(files_in(dir + "/sub"), 1u);
 }
 
 TEST(AtomicFile, AFailedCheckLeavesTheOldFileAndNoTemporary) {
-  const std::string dir = fresh_dir("check");
+  const std::string dir = scratch_dir("check");
   const std::string path = dir + "/summary.json";
   write_file_atomically(path, "old\n");
   std::string seen;
   try {
     write_file_atomically(path, "new\n", [&](const std::string& tmp) {
-      seen = read(tmp);  // the check sees the written bytes
+      seen = read_text(tmp);  // the check sees the written bytes
       return std::string("not valid");
     });
     FAIL() << "no exception";
@@ -70,12 +59,12 @@ TEST(AtomicFile, AFailedCheckLeavesTheOldFileAndNoTemporary) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   EXPECT_EQ(seen, "new\n");
-  EXPECT_EQ(read(path), "old\n");
+  EXPECT_EQ(read_text(path), "old\n");
   EXPECT_EQ(files_in(dir), 1u);
 }
 
 TEST(AtomicFile, EmptyContentAndAnUnwritableFolderAreRefused) {
-  const std::string dir = fresh_dir("refused");
+  const std::string dir = scratch_dir("refused");
   EXPECT_THROW(write_file_atomically(dir + "/empty.csv", ""), std::runtime_error);
   EXPECT_FALSE(fs::exists(dir + "/empty.csv"));
   // A file where the folder should be.

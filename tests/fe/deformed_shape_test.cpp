@@ -34,16 +34,15 @@
 #include "rackopt/output/file_check.hpp"
 #include "rackopt/output/plot.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/scratch_dir.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
 
 namespace fs = std::filesystem;
 
-Drive loaded_small_drive() {
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml",
-                      {"pinion.teeth=14", "pinion.profile_shift=0.3", "rack.body_height=12 mm", "load.thrust=12 kN"});
-}
+Drive loaded_small_drive() { return testing::small_gantry({"load.thrust=12 kN"}); }
 
 // A travel 3 % of a pitch before a pair enters mesh.
 double just_before_an_entry(const Drive& d) {
@@ -107,8 +106,7 @@ void check_shape(const FePosition& p) {
               scale.factor);
 
   // Both pictures render to valid PNGs.
-  const fs::path dir = fs::temp_directory_path() / ("rackopt_shape_plot_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test_support::scratch_dir("shape_plot");
   write_file_atomic((dir / "mesh.gp").string(), mesh_gnuplot(s, "small drive", "mesh.png.tmp"));
   write_file_atomic((dir / "deformed.gp").string(), deformed_gnuplot(s, "small drive", "deformed.png.tmp"));
   std::vector<std::string> warnings;

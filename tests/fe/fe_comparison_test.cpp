@@ -22,6 +22,7 @@
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/output/file_check.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -181,7 +182,7 @@ TEST(FeComparison, AnalyticCompliancesAgreeWithTheSingleToothDefinition) {
   opt.positions = 4;
   opt.calls = f.calls();
   for (const char* problem : {"gantry_axis", "rack_railway"}) {
-    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + problem + ".yaml");
+    const Drive d = test_support::load_shipped_problem(std::string(problem) + ".yaml");
     const FeComparison c = compare_with_fe(d, opt);
     const Drive ref = fe_reference_drive(d);
     for (const ComparedPosition& r : c.rows) {
@@ -377,7 +378,7 @@ TEST(FeComparison, ExtendedContactPairsAreListedApartAndNotCompared) {
 // pairs there (s <= 0 or below the form circle) have no involute to load, so their pinion solve is left out and said so; the mesh
 // solve and the rack tooth are still compared.
 TEST(FeComparison, PinionContactsOffTheInvoluteAreNotComparedAndSaidSo) {
-  const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway_paper.yaml");
+  const Drive d = test_support::load_shipped_problem("rack_railway_paper.yaml");
   Fake f;
   FeCalls calls = f.calls();
   const auto tooth = calls.tooth_compliance;

@@ -14,11 +14,12 @@
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/geometry/pinion_section.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
 
-Drive railway() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml"); }
+Drive railway() { return test_support::load_shipped_problem("rack_railway.yaml"); }
 
 double shoelace_area(const Polygon2D& p) {
   double twice = 0;

@@ -13,12 +13,13 @@
 #include "rackopt/fe/mesh_placement.hpp"
 #include "rackopt/geometry/pinion_generation.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
 
 Drive problem(const std::string& name, const std::vector<std::string>& overrides = {}) {
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml", overrides);
+  return test_support::load_shipped_problem(name + ".yaml", overrides);
 }
 
 Point2 rotate(Point2 p, double a) { return {p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a)}; }

@@ -19,15 +19,12 @@
 #include "rackopt/fe/mesh_position_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
 
-Drive small_drive(const std::vector<std::string>& more = {}) {
-  std::vector<std::string> set = {"pinion.teeth=14", "pinion.profile_shift=0.3", "rack.body_height=12 mm"};
-  set.insert(set.end(), more.begin(), more.end());
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml", set);
-}
+Drive small_drive(const std::vector<std::string>& more = {}) { return testing::small_gantry(more); }
 
 using testing::share_sum;
 

@@ -24,6 +24,7 @@
 #include "rackopt/fe/gmsh_mesher.hpp"
 #include "rackopt/fe/plane_stress_solve.hpp"
 #include "rackopt/fe/rack_span_fe.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -112,12 +113,10 @@ TEST(RackOnSupportsFe, HorizontalLoadSplitsAsTheBarsInParallelOrGoesToThePin) {
   EXPECT_NEAR(pr.rx_right, 0.0, 1e-6 * P);
 }
 
-// The small drive of mesh_position_test.cpp (gantry axis, 14 teeth, x =
-// +0.3, 12 mm rack body) on a 0.2 m span: 16 teeth between the hinges.
+// The small gantry (fe_test_helpers.hpp) on a 0.2 m span: 16 teeth between
+// the hinges.
 Drive small_span_drive(const std::string& supports = "pin-pin") {
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml",
-                      {"pinion.teeth=14", "pinion.profile_shift=0.3", "rack.body_height=12 mm", "rack.span=0.2 m",
-                       "rack.supports=" + supports});
+  return testing::small_gantry({"rack.span=0.2 m", "rack.supports=" + supports});
 }
 
 using testing::share_sum;
@@ -169,7 +168,7 @@ TEST(RackOnSupportsFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
   FeOptions on;
   on.rack_on_supports = true;
   // The gantry rack is a rectangular body as wide as the teeth: its own section.
-  const Drive g = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/gantry_axis.yaml");
+  const Drive g = test_support::load_shipped_problem("gantry_axis.yaml");
   const Drive gs = fe_reference_drive(g, on);
   EXPECT_EQ(gs.effects.rack_span, RackSpanModel::kCoupled);
   EXPECT_NEAR(gs.rack.section.second_moment / g.rack.section.second_moment, 1.0, 1e-12);
@@ -178,7 +177,7 @@ TEST(RackOnSupportsFe, TheComparisonDriveIsTheCoupledBeamOfTheFeBody) {
   EXPECT_EQ(fe_reference_drive(g, FeOptions{}).effects.rack_span, RackSpanModel::kRigid);
   // A problem with a rigid rack body still gets the coupled beam, and a
   // deeper FE body its own section.
-  const Drive lm = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/large_module.yaml");
+  const Drive lm = test_support::load_shipped_problem("large_module.yaml");
   ASSERT_EQ(lm.effects.rack_span, RackSpanModel::kRigid);
   on.rack_body_depth = 0.2;
   const Drive ls = fe_reference_drive(lm, on);

@@ -30,6 +30,7 @@
 #include "rackopt/fe/rack_span_fe.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -41,7 +42,7 @@ TEST(RackOnSupportsFe, DISABLED_RackSupportsTable) {
   std::istringstream names(env ? env : "gantry_axis rack_railway");
   std::string name;
   while (names >> name) {
-    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml");
+    const Drive d = test_support::load_shipped_problem(name + ".yaml");
     FeOptions on;
     on.rack_on_supports = true;
     const Drive ref = fe_reference_drive(d);
@@ -93,7 +94,7 @@ TEST(RackOnSupportsFe, DISABLED_SpanRackElementCounts) {
   for (const auto& [name, set] : std::vector<std::pair<std::string, std::vector<std::string>>>{
            {"gantry_axis", {}}, {"large_module", {}}, {"rack_railway", {}}, {"ship_lift", {}},
            {"rack_railway", {"pinion.module=10 mm", "pinion.bore_radius=50 mm"}}}) {
-    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml", set);
+    const Drive d = test_support::load_shipped_problem(name + ".yaml", set);
     FeOptions on;
     on.rack_on_supports = true;
     const MeshStiffnessModel model(fe_reference_drive(d));

@@ -15,6 +15,7 @@
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -25,7 +26,7 @@ TEST(FeToothCompliance, DISABLED_ToothComplianceTable) {
   const char* levels_env = std::getenv("RACKOPT_FE_LEVELS");
   const int max_level = levels_env ? std::atoi(levels_env) : 1;
   for (const char* name : {"gantry_axis", "large_module", "rack_railway", "rack_railway_paper", "ship_lift"}) {
-    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml");
+    const Drive d = test_support::load_shipped_problem(std::string(name) + ".yaml");
     const MeshGeometry g = build_mesh_geometry(d);
     for (int level = 0; level <= max_level; ++level) {
       FeOptions o;

@@ -16,6 +16,7 @@
 #include "rackopt/fe/tooth_compliance_fe.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::fe {
 namespace {
@@ -121,7 +122,7 @@ TEST(FeToothCompliance, ContactsOffThePathAndBadOptionsAreErrors) {
 // circle: the rack tooth there is still loaded (its flank is straight), the
 // pinion, with no involute to load, is refused before any FE work.
 TEST(FeToothCompliance, BelowTheBaseCircleTheRackIsSolvedAndThePinionRefused) {
-  const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway_paper.yaml");
+  const Drive d = test_support::load_shipped_problem("rack_railway_paper.yaml");
   const MeshGeometry g = build_mesh_geometry(d);
   ASSERT_LT(g.path.s_start, 0);
   const double s = 0.5 * g.path.s_start;

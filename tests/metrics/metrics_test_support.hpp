@@ -9,6 +9,7 @@
 
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::test {
 
@@ -16,7 +17,7 @@ inline constexpr double kPi = std::numbers::pi;
 
 // problems/<name>.yaml of the source tree.
 inline std::string path(const std::string& name) {
-  return std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml";
+  return test_support::shipped_problem_path(name + ".yaml");
 }
 
 // The shipped problem <name> loaded as it is.

@@ -15,18 +15,14 @@
 #include "rackopt/output/stiffness_files.hpp"
 #include "rackopt/output/wear_files.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string file_set_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "rackopt_file_set_test" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
+using test_support::scratch_dir;
 
 // Plots are drawn by a program that does not exist: every plot is then a
 // warning, whether or not the machine has gnuplot.
@@ -94,7 +90,7 @@ WearReliabilityResult small_wear_result(const Drive& d) {
 
 TEST(StiffnessFiles, WritesTheTableAndScriptAndListsByRole) {
   const StiffnessCurve curve = small_drive_curve();
-  const std::string dir = file_set_dir("stiffness");
+  const std::string dir = scratch_dir("stiffness");
   const NoGnuplot no_gnuplot;
   const WrittenFiles f = write_stiffness_files(curve, dir, "small drive");
   EXPECT_EQ(roles_of(f), std::vector<std::string>{"stiffness_csv"});
@@ -109,7 +105,7 @@ TEST(StiffnessFiles, WritesTheTableAndScriptAndListsByRole) {
 
 TEST(StiffnessFiles, WithoutPlotsOnlyTheTable) {
   const StiffnessCurve curve = small_drive_curve();
-  const std::string dir = file_set_dir("stiffness_no_plots");
+  const std::string dir = scratch_dir("stiffness_no_plots");
   const WrittenFiles f = write_stiffness_files(curve, dir, "small drive", false);
   EXPECT_EQ(roles_of(f), std::vector<std::string>{"stiffness_csv"});
   EXPECT_EQ(f.written, std::vector<std::string>{dir + "/stiffness.csv"});
@@ -121,7 +117,7 @@ TEST(WearFiles, WritesEveryTableOfAMonteCarloRunUnderItsRole) {
   const Drive d = small_wear_drive();
   const WearReliabilityResult r = small_wear_result(d);
   ASSERT_FALSE(r.lives.empty());
-  const std::string dir = file_set_dir("wear");
+  const std::string dir = scratch_dir("wear");
   const NoGnuplot no_gnuplot;
   const WrittenFiles f = write_wear_files(d, r, dir, "small drive");
   EXPECT_EQ(roles_of(f), (std::vector<std::string>{"wear_profile_csv", "life_samples_csv", "reliability_csv",
@@ -146,7 +142,7 @@ TEST(WearFiles, WithoutRandomInputsOnlyTheProfile) {
   Drive d = small_wear_drive();
   d.reliability.inputs.clear();
   const WearReliabilityResult r = small_wear_result(d);
-  const std::string dir = file_set_dir("wear_nominal");
+  const std::string dir = scratch_dir("wear_nominal");
   const WrittenFiles f = write_wear_files(d, r, dir, "small drive", false);
   EXPECT_EQ(roles_of(f), std::vector<std::string>{"wear_profile_csv"});
   EXPECT_EQ(f.written, std::vector<std::string>{dir + "/wear_profile.csv"});

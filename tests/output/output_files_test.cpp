@@ -16,29 +16,14 @@
 #include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/file_check.hpp"
 #include "rackopt/output/folder_lock.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path tmp_root() { return fs::temp_directory_path() / ("rackopt_output_test_" + std::to_string(::getpid())); }
-
-std::string tmp_dir(const std::string& name) {
-  const fs::path dir = tmp_root() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-class RemoveTmpRoot : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(tmp_root(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const remove_tmp_root = ::testing::AddGlobalTestEnvironment(new RemoveTmpRoot);
+using test_support::scratch_dir;
 
 std::string put(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -56,7 +41,7 @@ std::string tiny_png() {
 }
 
 TEST(CheckOutputFile, PngNeedsSignatureAndIendAtTheEnd) {
-  const std::string dir = tmp_dir("png");
+  const std::string dir = scratch_dir("png");
   const std::string png = tiny_png();
   EXPECT_EQ(check_output_file(put(dir + "/a.png.tmp", png), "a.png"), "");
   EXPECT_EQ(check_output_file(put(dir + "/b.png.tmp", png.substr(0, png.size() - 5)), "b.png"),
@@ -73,13 +58,13 @@ TEST(CheckOutputFile, JsonMustBeOneCompleteValue) {
   EXPECT_NE(check_json_complete("{\"a\": \"unterminated}"), "");
   EXPECT_NE(check_json_complete("{} {}"), "");
   EXPECT_NE(check_json_complete("   "), "");
-  const std::string dir = tmp_dir("json");
+  const std::string dir = scratch_dir("json");
   EXPECT_EQ(check_output_file(put(dir + "/s.json.tmp.12", "{\"ok\":true}\n"), "summary.json"), "");
   EXPECT_NE(check_output_file(put(dir + "/t.json.tmp.12", "{\"ok\":tr"), "summary.json"), "");
 }
 
 TEST(CheckOutputFile, TextTablesEndWithANewlineAndHaveTheirSize) {
-  const std::string dir = tmp_dir("csv");
+  const std::string dir = scratch_dir("csv");
   EXPECT_EQ(check_output_file(put(dir + "/a.csv", "x,y\n1,2\n"), "a.csv", 8), "");
   EXPECT_NE(check_output_file(put(dir + "/b.csv", "x,y\n1,"), "b.csv"), "");
   EXPECT_NE(check_output_file(put(dir + "/c.csv", "x,y\n1,2\n"), "c.csv", 9), "");  // short
@@ -89,7 +74,7 @@ TEST(CheckOutputFile, TextTablesEndWithANewlineAndHaveTheirSize) {
 
 // A format the check does not know is refused, not published unverified.
 TEST(CheckOutputFile, AnUnknownFormatIsRefused) {
-  const std::string dir = tmp_dir("unknown");
+  const std::string dir = scratch_dir("unknown");
   const std::string why = check_output_file(put(dir + "/deck.inp.tmp", "*NODE\n"), "deck.inp");
   EXPECT_NE(why.find("no completeness check for the format '.inp'"), std::string::npos) << why;
   EXPECT_NE(check_output_file(put(dir + "/README", "text\n"), "README"), "");
@@ -114,7 +99,7 @@ int with_file_size_limit(long limit, F body) {
 }
 
 TEST(WriteFileAtomic, AWriteFailureLeavesNeitherTheFileNorATemporary) {
-  const std::string dir = tmp_dir("full");
+  const std::string dir = scratch_dir("full");
   const std::string path = dir + "/table.csv";
   std::string big;
   while (big.size() < 100000) big += "0.123456789,0.987654321\n";
@@ -154,14 +139,14 @@ TEST(WriteFileAtomic, AWriteFailureLeavesNeitherTheFileNorATemporary) {
 }
 
 TEST(WriteFileAtomic, RefusesToPublishIncompleteJson) {
-  const std::string dir = tmp_dir("json_refused");
+  const std::string dir = scratch_dir("json_refused");
   EXPECT_THROW(write_file_atomic(dir + "/summary.json", "{\"ok\": tr"), std::runtime_error);
   EXPECT_THROW(write_file_atomic(dir + "/empty.csv", ""), std::runtime_error);
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
 TEST(PublishVerified, ATruncatedImageIsRemovedNotRenamed) {
-  const std::string dir = tmp_dir("publish");
+  const std::string dir = scratch_dir("publish");
   const std::string png = tiny_png();
   put(dir + "/p.png.tmp", png.substr(0, 40));
   EXPECT_EQ(publish_verified(dir + "/p.png.tmp", dir + "/p.png"), "no IEND chunk at the end (truncated PNG)");
@@ -185,7 +170,7 @@ TEST(StaleTemporaries, OnlyOurWritersNamesAreMatched) {
 }
 
 TEST(FolderLock, ASecondHolderIsRefusedAndStaleTemporariesGo) {
-  const std::string dir = tmp_dir("lock");
+  const std::string dir = scratch_dir("lock");
   put(dir + "/report.md.tmp.99999", "partial");
   put(dir + "/keep.txt", "mine");
   {

@@ -6,19 +6,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 #include "study_test_support.hpp"
+#include "support/file_text.hpp"
 
 namespace rackopt::study {
 namespace {
 
-using testing::fresh_dir;
+using rackopt::test_support::read_text;
 using testing::railway_spec;
+using testing::scratch_path;
 
 constexpr double kDeg = 3.14159265358979323846 / 180;
 
@@ -61,17 +61,10 @@ StudySpec verified_spec() {
   return s;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(FeVerification, TheBestDesignIsComparedAfterTheStudyAndReported) {
   const StudySpec spec = verified_spec();
   RunOptions o;
-  o.out_dir = fresh_dir("fe_verify");
+  o.out_dir = scratch_path("fe_verify");
   o.threads = 2;
   o.fe_calls = fake_fe();
   const StudyResult r = run_study(spec, o);
@@ -85,7 +78,7 @@ TEST(FeVerification, TheBestDesignIsComparedAfterTheStudyAndReported) {
   EXPECT_NEAR(r.best_drive->pinion.pressure_angle, 16 * kDeg, 1e-12);
 
   const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
-  const std::string md = slurp(o.out_dir + "/report.md");
+  const std::string md = read_text(o.out_dir + "/report.md");
   EXPECT_NE(md.find("## FE verification of the optimum"), std::string::npos);
   EXPECT_NE(md.find("| X [m] | K FE [MN/m]"), std::string::npos);
   EXPECT_NE(md.find("+11.11 %"), std::string::npos) << md;  // (1 - 0.9) / 0.9
@@ -99,7 +92,7 @@ TEST(FeVerification, TheBestDesignIsComparedAfterTheStudyAndReported) {
 TEST(FeVerification, AFailedSolveIsReportedAndTheStudyKeepsItsResults) {
   const StudySpec spec = verified_spec();
   RunOptions o;
-  o.out_dir = fresh_dir("fe_verify_fail");
+  o.out_dir = scratch_path("fe_verify_fail");
   o.fe_calls = fake_fe();
   o.fe_calls.mesh_position = [](const Drive&, double, const fe::FeOptions&) -> fe::FePosition {
     throw fe::CcxError("*ERROR in contact: no convergence", "/tmp/rackopt-ccx-abc/job.inp", "job.log");
@@ -111,7 +104,7 @@ TEST(FeVerification, AFailedSolveIsReportedAndTheStudyKeepsItsResults) {
   EXPECT_NE(r.fe_verification_error.find("no convergence"), std::string::npos) << r.fe_verification_error;
   EXPECT_NE(r.fe_verification_error.find("/tmp/rackopt-ccx-abc/job.inp"), std::string::npos);
   const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
-  const std::string md = slurp(o.out_dir + "/report.md");
+  const std::string md = read_text(o.out_dir + "/report.md");
   EXPECT_NE(md.find("was not verified by FE: FE solve failed: *ERROR in contact"), std::string::npos) << md;
   EXPECT_NE(rep.summary_json.find("\"ok\":false,\"error\":\"FE solve failed"), std::string::npos);
   EXPECT_TRUE(rep.files.get("fe_csv").empty());
@@ -121,7 +114,7 @@ TEST(FeVerification, NothingWithoutVerifyAndNoSolveWithoutADesign) {
   StudySpec spec = verified_spec();
   spec.verify_fe.reset();
   RunOptions o;
-  o.out_dir = fresh_dir("fe_verify_none");
+  o.out_dir = scratch_path("fe_verify_none");
   int solves = 0;
   o.fe_calls = fake_fe();
   o.fe_calls.mesh_position = [&](const Drive&, double, const fe::FeOptions&) -> fe::FePosition {
@@ -132,7 +125,7 @@ TEST(FeVerification, NothingWithoutVerifyAndNoSolveWithoutADesign) {
   EXPECT_FALSE(r.fe_verification);
   EXPECT_TRUE(r.fe_verification_error.empty());
   const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
-  EXPECT_EQ(slurp(o.out_dir + "/report.md").find("FE verification"), std::string::npos);
+  EXPECT_EQ(read_text(o.out_dir + "/report.md").find("FE verification"), std::string::npos);
   EXPECT_EQ(rep.summary_json.find("fe_verification"), std::string::npos);
 
   StudyResult none;

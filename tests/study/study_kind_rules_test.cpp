@@ -113,7 +113,7 @@ TEST(StudyKindRules, SolverShapeCountsContinuousVariablesAndConstraintSides) {
 TEST(StudyKindRules, TheRunnerRefusesWithTheSameMessage) {
   StudySpec two = optimize_spec();
   two.objectives.push_back(objective("contact_ratio"));
-  const std::string out = testing::fresh_dir("kind_rules_refused");
+  const std::string out = testing::scratch_path("kind_rules_refused");
   RunOptions options;
   options.out_dir = out;
   try {

@@ -20,16 +20,6 @@ namespace {
 
 using namespace rackopt::study::testing;
 
-// Removes this process's result folders at the end.
-class CleanUp : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(test_root(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const clean_up = ::testing::AddGlobalTestEnvironment(new CleanUp);
-
 std::string bits(const std::vector<double>& x) {
   std::string k(x.size() * sizeof(double), '\0');
   if (!x.empty()) std::memcpy(k.data(), x.data(), k.size());
@@ -82,8 +72,8 @@ TEST(StudySweep, GridIsIndependentOfThreadCount) {
   s.variables[0].levels = 5;
   s.variables[1].levels = 7;
   s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
-  const StudyResult one = run_study(s, options_in(fresh_dir("grid1"), 1));
-  const StudyResult two = run_study(s, options_in(fresh_dir("grid2"), 2));
+  const StudyResult one = run_study(s, options_in(scratch_path("grid1"), 1));
+  const StudyResult two = run_study(s, options_in(scratch_path("grid2"), 2));
   ASSERT_EQ(to_string(one.status), "ok");
   ASSERT_EQ(one.sweep_points.size(), 35u);
   ASSERT_EQ(two.sweep_points.size(), 35u);
@@ -123,14 +113,14 @@ TEST(StudySweep, WithoutObjectivesHasNoBestAndNoLeastInfeasible) {
   s.objectives.clear();
   s.constraints.clear();
   s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
-  const StudyResult r = run_study(s, options_in(fresh_dir("plain_sweep")));
+  const StudyResult r = run_study(s, options_in(scratch_path("plain_sweep")));
   ASSERT_EQ(r.sweep_points.size(), 4u);
   for (const auto& p : r.sweep_points) EXPECT_TRUE(p.feasible);
   EXPECT_FALSE(r.best);
   EXPECT_FALSE(r.least_infeasible);
   // With an impossible constraint the least infeasible point is reported.
   s.constraints = {constraint("contact_ratio", 3.0)};
-  const StudyResult q = run_study(s, options_in(fresh_dir("plain_sweep_infeasible")));
+  const StudyResult q = run_study(s, options_in(scratch_path("plain_sweep_infeasible")));
   EXPECT_FALSE(q.best);
   ASSERT_TRUE(q.least_infeasible);
   EXPECT_FALSE(q.least_infeasible->feasible);
@@ -145,8 +135,8 @@ TEST_P(StudySampledSweep, SnapsDiscreteValuesAndIsThreadIndependent) {
   s.sweep.method = GetParam();
   s.sweep.points = 20;
   s.report_metrics = {metrics::parse_metric_request("contact_ratio")};
-  const StudyResult one = run_study(s, options_in(fresh_dir("lhs1"), 1));
-  const StudyResult two = run_study(s, options_in(fresh_dir("lhs2"), 2));
+  const StudyResult one = run_study(s, options_in(scratch_path("lhs1"), 1));
+  const StudyResult two = run_study(s, options_in(scratch_path("lhs2"), 2));
   ASSERT_EQ(one.sweep_points.size(), 20u);
   EXPECT_EQ(one.evaluations, 20u);  // no objective: no start design needed
   for (std::size_t k = 0; k < 20; ++k) {
@@ -171,7 +161,7 @@ TEST(StudySweep, ImpossibleDesignsAreFailedEvaluationsWithReasons) {
   s.variables[0].levels = 9;
   s.objectives = {objective("stiffness_fluctuation")};
   s.constraints = {constraint("contact_ratio", 1.2)};
-  const StudyResult r = run_study(s, options_in(fresh_dir("failed_sweep")));
+  const StudyResult r = run_study(s, options_in(scratch_path("failed_sweep")));
   ASSERT_EQ(r.sweep_points.size(), 9u);
   std::size_t failed = 0;
   for (const auto& p : r.sweep_points) {
@@ -206,7 +196,7 @@ TEST(StudySweep, BadSweepIsAnInputErrorNamingTheStudyFile) {
   s.sweep.levels = 1000;
   s.sweep.max_points = 5000;
   try {
-    run_study(s, options_in(fresh_dir("bad_sweep")));
+    run_study(s, options_in(scratch_path("bad_sweep")));
     FAIL() << "a sweep above max_points ran";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("test_study.yaml"), std::string::npos) << e.what();
@@ -219,11 +209,11 @@ TEST(StudyOptimize, AtLeastAsGoodAsADenseGridAndReproducible) {
   StudySpec grid = sizing_spec(StudyKind::kSweep);
   grid.variables[0].levels = 41;  // 0.25 deg
   grid.variables[1].levels = 7;
-  const StudyResult g = run_study(grid, options_in(fresh_dir("dense_grid"), 2));
+  const StudyResult g = run_study(grid, options_in(scratch_path("dense_grid"), 2));
   ASSERT_TRUE(g.best);
 
   const StudySpec s = sizing_spec(StudyKind::kOptimize);
-  RunOptions with_progress = options_in(fresh_dir("opt_a"));
+  RunOptions with_progress = options_in(scratch_path("opt_a"));
   std::vector<Progress> seen;
   with_progress.progress = [&](const Progress& p) { seen.push_back(p); };
   const StudyResult a = run_study(s, with_progress);
@@ -250,7 +240,7 @@ TEST(StudyOptimize, AtLeastAsGoodAsADenseGridAndReproducible) {
   ASSERT_TRUE(seen.back().best);
   EXPECT_EQ(*seen.back().best, a.best->objectives[0]);
 
-  const StudyResult b = run_study(s, options_in(fresh_dir("opt_b")));
+  const StudyResult b = run_study(s, options_in(scratch_path("opt_b")));
   ASSERT_TRUE(b.best);
   EXPECT_EQ(bits(a.best->x), bits(b.best->x));
   EXPECT_EQ(a.evaluations, b.evaluations);
@@ -265,7 +255,7 @@ TEST(StudyOptimize, MaximizeReportsTheMetricInItsOwnSense) {
   s.objectives = {objective("min_stiffness_ks", true)};
   s.constraints = {constraint("contact_ratio", 1.3)};
   s.solver.max_evaluations = 60;
-  const StudyResult r = run_study(s, options_in(fresh_dir("maximize")));
+  const StudyResult r = run_study(s, options_in(scratch_path("maximize")));
   ASSERT_TRUE(r.best) << r.status;
   EXPECT_GT(r.best->objectives[0], 0);
   EXPECT_EQ(r.best->objectives[0], metric(*r.best, s.objectives[0].label));
@@ -274,7 +264,7 @@ TEST(StudyOptimize, MaximizeReportsTheMetricInItsOwnSense) {
   StudySpec g = s;
   g.kind = StudyKind::kSweep;
   g.variables[0].levels = 41;
-  const StudyResult gr = run_study(g, options_in(fresh_dir("maximize_grid"), 2));
+  const StudyResult gr = run_study(g, options_in(scratch_path("maximize_grid"), 2));
   ASSERT_TRUE(gr.best);
   EXPECT_GE(r.best->objectives[0], gr.best->objectives[0] * (1 - 1e-4));
   // The grid's own choice is the largest feasible value.
@@ -289,7 +279,7 @@ TEST(StudyOptimize, ImpossibleConstraintReportsTheLeastInfeasibleDesign) {
   StudySpec s = sizing_spec(StudyKind::kOptimize);
   s.constraints = {constraint("contact_ratio", 3.0)};  // a 14..20 deg pinion of 22 teeth never gets there
   s.solver.max_evaluations = 40;
-  const StudyResult r = run_study(s, options_in(fresh_dir("no_feasible")));
+  const StudyResult r = run_study(s, options_in(scratch_path("no_feasible")));
   EXPECT_EQ(to_string(r.status), "no_feasible_point");
   EXPECT_FALSE(r.best);
   ASSERT_TRUE(r.least_infeasible);
@@ -311,7 +301,7 @@ TEST(StudyOptimize, FailedStartDesignDoesNotStopTheStudy) {
   s.variables = {continuous("pinion.pressure_angle", 20 * kDeg, 45 * kDeg, 42 * kDeg)};
   s.objectives = {objective("stiffness_fluctuation")};
   s.solver.max_evaluations = 30;
-  const StudyResult r = run_study(s, options_in(fresh_dir("failed_start")));
+  const StudyResult r = run_study(s, options_in(scratch_path("failed_start")));
   EXPECT_GE(r.failed_evaluations, 1u);
   EXPECT_EQ(r.evaluations, rows_of(r, s).size());
   for (const auto& row : rows_of(r, s)) {
@@ -333,7 +323,7 @@ TEST(StudyOptimize, DiscreteEnumerationPicksTheBestCombination) {
   s.objectives[0].scale = 1;  // so that each combination is the same solver run as its reference below
   s.constraints = {constraint("contact_ratio", 1.3)};
   s.solver.max_evaluations = 50;
-  const StudyResult r = run_study(s, options_in(fresh_dir("discrete")));
+  const StudyResult r = run_study(s, options_in(scratch_path("discrete")));
   ASSERT_TRUE(r.best) << r.status;
 
   // References: one study per module, the module written into the problem.
@@ -342,7 +332,7 @@ TEST(StudyOptimize, DiscreteEnumerationPicksTheBestCombination) {
     StudySpec one = s;
     one.variables = {s.variables[1]};
     one.problem_overrides.push_back("pinion.module=" + std::to_string(m * 1000) + " mm");
-    const StudyResult o = run_study(one, options_in(fresh_dir("discrete_ref")));
+    const StudyResult o = run_study(one, options_in(scratch_path("discrete_ref")));
     ASSERT_TRUE(o.best);
     if (o.best->objectives[0] < best_ref) {
       best_ref = o.best->objectives[0];
@@ -357,7 +347,7 @@ TEST(StudyOptimize, DiscreteEnumerationPicksTheBestCombination) {
 }
 
 TEST(StudyOptimize, SetupErrorsAreInputErrors) {
-  const std::string dir = fresh_dir("setup");
+  const std::string dir = scratch_path("setup");
   StudySpec s = sizing_spec(StudyKind::kOptimize);
   s.solver.algorithm = "LN_BOBYQA";  // cannot take the constraint
   try {
@@ -387,10 +377,10 @@ TEST(StudyOptimize, SetupErrorsAreInputErrors) {
 
 TEST(StudyResume, StoppedRunResumesWithoutRepeatsAndEndsBitIdentical) {
   const StudySpec s = sizing_spec(StudyKind::kOptimize);
-  const StudyResult full = run_study(s, options_in(fresh_dir("resume_full")));
+  const StudyResult full = run_study(s, options_in(scratch_path("resume_full")));
   ASSERT_TRUE(full.best);
 
-  const std::string dir = fresh_dir("resume_cut");
+  const std::string dir = scratch_path("resume_cut");
   constexpr std::size_t kN = 9;
   RunOptions first = options_in(dir);
   std::size_t done = 0;
@@ -437,8 +427,8 @@ TEST(StudyResume, SweepResumesWhereItStopped) {
   StudySpec s = sizing_spec(StudyKind::kSweep);
   s.variables[0].levels = 6;
   s.variables[1].levels = 6;
-  const StudyResult full = run_study(s, options_in(fresh_dir("sweep_full")));
-  const std::string dir = fresh_dir("sweep_cut");
+  const StudyResult full = run_study(s, options_in(scratch_path("sweep_full")));
+  const std::string dir = scratch_path("sweep_cut");
   RunOptions first = options_in(dir);
   std::size_t done = 0;
   first.progress = [&](const Progress& p) { done = p.done; };
@@ -464,11 +454,11 @@ TEST(StudyResume, SweepResumesWhereItStopped) {
 // different warnings. The sizing study's box (10..20 deg) has both kinds.
 TEST(StudyResume, ReusedDesignsBringTheirWarningsInTheOrderOfAnUninterruptedRun) {
   const StudySpec s = sizing_spec(StudyKind::kOptimize);
-  const StudyResult full = run_study(s, options_in(fresh_dir("warn_full")));
+  const StudyResult full = run_study(s, options_in(scratch_path("warn_full")));
   ASSERT_TRUE(full.best);
   ASSERT_GE(full.warnings.size(), 2u);
 
-  const std::string dir = fresh_dir("warn_cut");
+  const std::string dir = scratch_path("warn_cut");
   constexpr std::size_t kN = 9;
   RunOptions first = options_in(dir);
   std::size_t done = 0;
@@ -506,7 +496,7 @@ TEST(StudyResume, DesignTakenFromTheStoreKeepsItsOwnWarnings) {
   StudySpec s = railway_spec(StudyKind::kEvaluate);
   s.variables = {continuous("pinion.pressure_angle", 10 * kDeg, 20 * kDeg, 14 * kDeg)};
   s.report_metrics = {metrics::parse_metric_request("contact_ratio")};
-  const std::string dir = fresh_dir("warn_evaluate");
+  const std::string dir = scratch_path("warn_evaluate");
   const StudyResult fresh = run_study(s, options_in(dir));
   ASSERT_TRUE(fresh.best);
   ASSERT_FALSE(fresh.best->warnings.empty());
@@ -531,7 +521,7 @@ TEST(StudyPareto, FrontIsFeasibleNonDominatedAndSpread) {
   s.pareto.points = 6;
   s.pareto.primary = 0;
   s.solver.max_evaluations = 40;
-  const StudyResult r = run_study(s, options_in(fresh_dir("pareto")));
+  const StudyResult r = run_study(s, options_in(scratch_path("pareto")));
   ASSERT_GE(r.front.size(), 3u) << r.status;
   double lo = INFINITY, hi = -INFINITY;
   for (std::size_t i = 0; i < r.front.size(); ++i) {
@@ -565,7 +555,7 @@ TEST(StudyPareto, FrontIsFeasibleNonDominatedAndSpread) {
   // Weights (1, 0) choose the end with the least fluctuation.
   StudySpec w = s;
   w.choose_weights = {1, 0};
-  const StudyResult rw = run_study(w, options_in(fresh_dir("pareto_w")));
+  const StudyResult rw = run_study(w, options_in(scratch_path("pareto_w")));
   ASSERT_TRUE(rw.chosen);
   EXPECT_EQ(*rw.chosen, 0u);
 }
@@ -577,7 +567,7 @@ TEST(StudyEvaluate, OneDesignMatchesEvaluateMetricsDirectly) {
   s.variables = {continuous("pinion.pressure_angle", 10 * kDeg, 20 * kDeg, 17 * kDeg)};
   s.objectives = {objective("stiffness_fluctuation")};
   s.report_metrics = {metrics::parse_metric_request("min_stiffness"), metrics::parse_metric_request("contact_ratio")};
-  const StudyResult r = run_study(s, options_in(fresh_dir("evaluate")));
+  const StudyResult r = run_study(s, options_in(scratch_path("evaluate")));
   EXPECT_EQ(to_string(r.status), "ok");
   EXPECT_EQ(r.evaluations, 1u);
   ASSERT_TRUE(r.best);
@@ -596,7 +586,7 @@ TEST(StudyEvaluate, OneDesignMatchesEvaluateMetricsDirectly) {
 TEST(StudyEvaluate, WithoutVariablesEvaluatesTheProblemAsWrittenAndResumes) {
   StudySpec s = railway_spec(StudyKind::kEvaluate);
   s.report_metrics = {metrics::parse_metric_request("supports_per_metre")};
-  const std::string dir = fresh_dir("evaluate_plain");
+  const std::string dir = scratch_path("evaluate_plain");
   const StudyResult r = run_study(s, options_in(dir));
   ASSERT_TRUE(r.best);
   EXPECT_TRUE(r.best->x.empty());
@@ -618,7 +608,7 @@ TEST(StudyReliability, RunsTheWearAnalysisOfTheDesign) {
   s.problem_overrides = {"reliability.samples=60"};
   s.report_metrics = {metrics::parse_metric_request("wear_life"), metrics::parse_metric_request("wear_life_at_R(0.9)")};
   s.metric_options.bootstrap_replicates = 20;
-  const StudyResult r = run_study(s, options_in(fresh_dir("reliability"), 2));
+  const StudyResult r = run_study(s, options_in(scratch_path("reliability"), 2));
   EXPECT_EQ(to_string(r.status), "ok");
   ASSERT_TRUE(r.best);
   ASSERT_TRUE(r.reliability);

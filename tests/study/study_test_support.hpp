@@ -1,14 +1,12 @@
 // Study specs built directly in C++ (the YAML loader is another module).
 #pragma once
 
-#include <unistd.h>
-
-#include <filesystem>
 #include <string>
 
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/study_spec.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt::study::testing {
 
@@ -66,18 +64,8 @@ inline ConstraintSpec constraint(const std::string& text, std::optional<double> 
   return c;
 }
 
-// This process's folder under the temp dir: a normal and a sanitizer build
-// (or ctest -j) may run these tests at the same time.
-inline std::filesystem::path test_root() {
-  return std::filesystem::temp_directory_path() / ("rackopt_study_test_" + std::to_string(::getpid()));
-}
-
-// A fresh, empty folder for one test's results.
-inline std::string fresh_dir(const std::string& name) {
-  const auto dir = test_root() / name;
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
+// Result folders: a fresh path in this process's scratch folder.
+using rackopt::test_support::scratch_path;
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 

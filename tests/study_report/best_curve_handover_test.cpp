@@ -15,6 +15,7 @@
 #include "rackopt/study/best_design_curve.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "report_test_support.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace {
 
@@ -24,7 +25,7 @@ StudySpec railway_evaluate_spec(bool stiffness_curve) {
   StudySpec s;
   s.name = "handover";
   s.kind = StudyKind::kEvaluate;
-  s.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml";
+  s.problem_path = test_support::shipped_problem_path("rack_railway.yaml");
   s.problem_overrides = {"numerics.positions_per_period=24"};
   s.report_metrics = {metrics::parse_metric_request("contact_ratio")};
   s.output.plots = false;
@@ -41,19 +42,19 @@ RunOptions handover_run_options(const std::string& dir) {
 
 TEST(BestCurveHandover, RunnerHandsTheCurveOverWhenAskedAndTheReportWritesIt) {
   const StudySpec spec = railway_evaluate_spec(true);
-  const std::string dir = tmp_dir("handover_on");
+  const std::string dir = scratch_path("handover_on");
   const StudyResult r = run_study(spec, handover_run_options(dir));
   ASSERT_TRUE(r.best_drive);
   ASSERT_TRUE(r.best_curve);
   EXPECT_TRUE(r.best_curve_error.empty());
   const StudyReport rep = write_study_report(spec, r, dir);
   ASSERT_EQ(rep.files.get("stiffness_csv"), dir + "/stiffness.csv");
-  EXPECT_EQ(slurp(dir + "/stiffness.csv"), stiffness_csv(MeshStiffnessModel(*r.best_drive).curve()));
+  EXPECT_EQ(read_text(dir + "/stiffness.csv"), stiffness_csv(MeshStiffnessModel(*r.best_drive).curve()));
 }
 
 TEST(BestCurveHandover, NoCurveWhenTheStudyDoesNotAskForIt) {
   const StudySpec spec = railway_evaluate_spec(false);
-  const std::string dir = tmp_dir("handover_off");
+  const std::string dir = scratch_path("handover_off");
   const StudyResult r = run_study(spec, handover_run_options(dir));
   ASSERT_TRUE(r.best_drive);
   EXPECT_FALSE(r.best_curve);
@@ -73,7 +74,7 @@ TEST(BestCurveHandover, ARefusedDesignIsAWarningOfTheReport) {
   attach_best_design_curve(spec, r);
   EXPECT_FALSE(r.best_curve);
   ASSERT_EQ(r.best_curve_error.rfind("no stiffness curve of the best design (", 0), 0u) << r.best_curve_error;
-  const std::string dir = tmp_dir("handover_refused");
+  const std::string dir = scratch_path("handover_refused");
   const StudyReport rep = write_study_report(spec, r, dir);
   ASSERT_FALSE(rep.warnings.empty());
   EXPECT_EQ(rep.warnings.back(), r.best_curve_error);

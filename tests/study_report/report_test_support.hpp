@@ -1,7 +1,8 @@
-// Helpers the tests of tests/report share (one unity batch compiles several
-// of its files together, so each helper is defined once, here): temporary
-// folders, reading files and CSV tables, a synthetic study whose metrics are
-// simple functions of the design, and report.md's links.
+// Helpers the tests of tests/study_report share (one unity batch compiles
+// several of its files together, so each helper is defined once, here): CSV
+// tables, a synthetic study whose metrics are simple functions of the design,
+// and report.md's links. Scratch folders and file text come from
+// tests/support/.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,13 +11,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_spec.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace {
 
@@ -25,18 +28,8 @@ using namespace rackopt;
 using namespace rackopt::study;
 using namespace rackopt::study_report;
 
-std::string tmp_dir(const std::string& name) {
-  const auto dir = fs::temp_directory_path() / ("rackopt_report_test_" + name);
-  fs::remove_all(dir);
-  return dir.string();
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using rackopt::test_support::read_text;
+using rackopt::test_support::scratch_path;
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
   std::vector<std::vector<std::string>> rows;
@@ -109,7 +102,7 @@ StudySpec base_spec(StudyKind kind) {
   s.file = "synthetic.yaml";
   s.description = "A made-up study whose metrics are simple functions of x.";
   s.kind = kind;
-  s.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/rack_railway.yaml";
+  s.problem_path = test_support::shipped_problem_path("rack_railway.yaml");
   s.variables.push_back(variable("pinion.module", QuantityKind::kLength, "mm", 0.02, 0.032));
   s.variables.push_back(variable("rack.span", QuantityKind::kLength, "m", 1.2, 3.0));
   s.objectives.push_back(objective("stiffness_fluctuation"));
@@ -160,7 +153,7 @@ std::vector<std::string> markdown_links(const std::string& md) {
 }
 
 void expect_links_exist(const std::string& dir) {
-  const std::string md = slurp(dir + "/report.md");
+  const std::string md = read_text(dir + "/report.md");
   ASSERT_FALSE(md.empty());
   const auto links = markdown_links(md);
   EXPECT_FALSE(links.empty());

@@ -24,6 +24,7 @@
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/best_design_curve.hpp"
 #include "report_test_support.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace {
 
@@ -43,9 +44,9 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
   r.best_drive = std::make_shared<const Drive>(load_problem(spec.problem_path));
   attach_best_design_curve(spec, r);  // the runner's handover: the report draws, never computes
 
-  const std::string dir = tmp_dir("optimize");
+  const std::string dir = scratch_path("optimize");
   const StudyReport rep = write_study_report(spec, r, dir);
-  const auto j = nlohmann::json::parse(slurp(dir + "/summary.json"));
+  const auto j = nlohmann::json::parse(read_text(dir + "/summary.json"));
   EXPECT_EQ(j, nlohmann::json::parse(rep.summary_json));
   EXPECT_EQ(j["status"], "converged");
   EXPECT_EQ(j["kind"], "optimize");
@@ -106,7 +107,7 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
     EXPECT_NE(e.path().extension(), ".log") << e.path();
   }
   expect_links_exist(dir);
-  const std::string md = slurp(dir + "/report.md");
+  const std::string md = read_text(dir + "/report.md");
   EXPECT_NE(md.find("converged"), std::string::npos);
   EXPECT_NE(md.find("25 mm"), std::string::npos);
   EXPECT_NE(md.find("contact_ratio"), std::string::npos);
@@ -133,7 +134,7 @@ TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
   StudySpec spec = base_spec(StudyKind::kPareto);
   spec.objectives.push_back(objective("supports_per_metre"));
   const StudyResult r = pareto_result(spec, 7, 4);
-  const std::string dir = tmp_dir("pareto2");
+  const std::string dir = scratch_path("pareto2");
   const StudyReport rep = write_study_report(spec, r, dir);
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["kind"], "pareto");
@@ -166,7 +167,7 @@ TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
   }
   EXPECT_FALSE(fs::exists(dir + "/best.csv"));
   expect_links_exist(dir);
-  EXPECT_NE(slurp(dir + "/report.md").find("**chosen**"), std::string::npos);
+  EXPECT_NE(read_text(dir + "/report.md").find("**chosen**"), std::string::npos);
 }
 
 TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
@@ -174,9 +175,9 @@ TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
   spec.objectives.push_back(objective("supports_per_metre"));
   spec.objectives.push_back(objective("min_stiffness", true));
   const StudyResult r = pareto_result(spec, 9, 0);
-  const std::string dir = tmp_dir("pareto3");
+  const std::string dir = scratch_path("pareto3");
   const StudyReport rep = write_study_report(spec, r, dir);
-  const std::string gp = slurp(dir + "/pareto.gp");
+  const std::string gp = read_text(dir + "/pareto.gp");
   EXPECT_NE(gp.find("multiplot layout 1,3"), std::string::npos);
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["front"][0]["objectives"][2]["sense"], "maximize");
@@ -204,7 +205,7 @@ TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {
   r.best = r.sweep_points[0];
   r.evaluations = 20;
   r.failed_evaluations = 1;
-  const std::string dir = tmp_dir("sweep");
+  const std::string dir = scratch_path("sweep");
   const StudyReport rep = write_study_report(spec, r, dir);
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["sweep_points"], 20);
@@ -247,7 +248,7 @@ TEST(StudyReport, NoFeasiblePointShowsTheLeastInfeasibleDesign) {
   ASSERT_FALSE(r.least_infeasible->feasible);
   r.evaluations = 12;
   r.best_history = std::vector<double>(12, std::numeric_limits<double>::infinity());
-  const std::string dir = tmp_dir("infeasible");
+  const std::string dir = scratch_path("infeasible");
   const StudyReport rep = write_study_report(spec, r, dir);
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["status"], "no_feasible_point");
@@ -263,7 +264,7 @@ TEST(StudyReport, NoFeasiblePointShowsTheLeastInfeasibleDesign) {
   // no finite history: no convergence plot
   EXPECT_FALSE(fs::exists(dir + "/history.png"));
   expect_links_exist(dir);
-  EXPECT_NE(slurp(dir + "/report.md").find("Least infeasible design"), std::string::npos);
+  EXPECT_NE(read_text(dir + "/report.md").find("Least infeasible design"), std::string::npos);
 }
 
 TEST(StudyReport, StoppedStudySaysHowToResume) {
@@ -272,7 +273,7 @@ TEST(StudyReport, StoppedStudySaysHowToResume) {
   r.status = study::StudyStatus::kStopped;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 9;
-  const std::string dir = tmp_dir("stopped");
+  const std::string dir = scratch_path("stopped");
   const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
   EXPECT_EQ(j["status"], "stopped");
   EXPECT_NE(j["message"].get<std::string>().find("--resume"), std::string::npos);
@@ -293,7 +294,7 @@ TEST(StudyReport, FailedDesignWritesNullsNotNaN) {
   r.least_infeasible = d;
   r.evaluations = 1;
   r.failed_evaluations = 1;
-  const std::string dir = tmp_dir("failed");
+  const std::string dir = scratch_path("failed");
   const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
   const auto& li = j["least_infeasible"];
   EXPECT_TRUE(li["max_violation"].is_null());
@@ -311,7 +312,7 @@ TEST(StudyReport, MissingGnuplotIsAWarningAndNothingLinksAPlot) {
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.evaluations = 3;
   r.best_history = {0.5, 0.4, 0.3};
-  const std::string dir = tmp_dir("nognuplot");
+  const std::string dir = scratch_path("nognuplot");
   ::setenv("RACKOPT_GNUPLOT", "/nonexistent/gnuplot-for-rackopt-tests", 1);
   const StudyReport rep = write_study_report(spec, r, dir);
   ::unsetenv("RACKOPT_GNUPLOT");
@@ -322,7 +323,7 @@ TEST(StudyReport, MissingGnuplotIsAWarningAndNothingLinksAPlot) {
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_FALSE(j["files"].contains("history_png"));
   EXPECT_EQ(j["warnings"].size(), rep.warnings.size());
-  const std::string md = slurp(dir + "/report.md");
+  const std::string md = read_text(dir + "/report.md");
   EXPECT_EQ(md.find(".png"), std::string::npos);
   expect_links_exist(dir);
 }
@@ -335,7 +336,7 @@ TEST(StudyReport, OutputSwitchesTurnPlotsAndReportOff) {
   r.status = study::StudyStatus::kConverged;
   r.best = design(spec, 0.025, 2.0, "start 0");
   r.best_history = {0.5};
-  const std::string dir = tmp_dir("switches");
+  const std::string dir = scratch_path("switches");
   const StudyReport rep = write_study_report(spec, r, dir);
   EXPECT_FALSE(fs::exists(dir + "/report.md"));
   EXPECT_FALSE(fs::exists(dir + "/history.gp"));
@@ -353,13 +354,13 @@ TEST(StudyReport, BestDesignsOwnWarningsComeFirstUnderTheirOwnHeading) {
   r.best_history = {0.5};
   // Run order: another design's warning came first.
   r.warnings = {"warning of another design", "shared remark", "undercut of the best"};
-  const std::string dir = tmp_dir("best_warnings");
+  const std::string dir = scratch_path("best_warnings");
   const StudyReport rep = write_study_report(spec, r, dir);
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["best"]["warnings"], nlohmann::json({"undercut of the best", "shared remark"}));
   EXPECT_EQ(j["warnings"], nlohmann::json({"undercut of the best", "shared remark", "warning of another design"}));
 
-  const std::string md = slurp(dir + "/report.md");
+  const std::string md = read_text(dir + "/report.md");
   const std::size_t own = md.find("## Warnings of the best design\n");
   const std::size_t rest = md.find("## Other warnings of the run\n");
   ASSERT_NE(own, std::string::npos) << md;
@@ -371,9 +372,9 @@ TEST(StudyReport, BestDesignsOwnWarningsComeFirstUnderTheirOwnHeading) {
 
   // A best design without warnings: one plain list, no empty section.
   r.best->warnings.clear();
-  const std::string dir2 = tmp_dir("run_warnings_only");
+  const std::string dir2 = scratch_path("run_warnings_only");
   const StudyReport rep2 = write_study_report(spec, r, dir2);
-  const std::string md2 = slurp(dir2 + "/report.md");
+  const std::string md2 = read_text(dir2 + "/report.md");
   EXPECT_EQ(md2.find("Warnings of the best design"), std::string::npos) << md2;
   EXPECT_EQ(md2.find("Other warnings"), std::string::npos) << md2;
   EXPECT_NE(md2.find("## Warnings\n\n- warning of another design\n- shared remark\n- undercut of the best\n"),
@@ -386,7 +387,7 @@ TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   StudySpec spec;
   spec.name = "ship lift reliability";
   spec.kind = StudyKind::kReliability;
-  spec.problem_path = std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml";
+  spec.problem_path = test_support::shipped_problem_path("ship_lift.yaml");
   auto drive = std::make_shared<const Drive>(load_problem(spec.problem_path));
   WearReliabilityOptions opt;
   opt.samples = 100;
@@ -400,7 +401,7 @@ TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   r.best = DesignResult{};
   r.best->ok = r.best->feasible = true;
   r.best->label = "design";
-  const std::string dir = tmp_dir("reliability");
+  const std::string dir = scratch_path("reliability");
   const auto j = nlohmann::json::parse(write_study_report(spec, r, dir).summary_json);
   for (const char* role : {"wear_profile_csv", "life_samples_csv", "reliability_csv", "life_histogram_csv"}) {
     ASSERT_TRUE(j["files"].contains(role)) << role;
@@ -423,7 +424,7 @@ TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
 }
 
 TEST(RenderPlot, FailingScriptLeavesNoImageAndWarns) {
-  const std::string dir = tmp_dir("badplot");
+  const std::string dir = scratch_path("badplot");
   fs::create_directories(dir);
   std::ofstream(dir + "/bad.gp") << "set terminal pngcairo\nset output 'bad.png.tmp'\nplot 'missing.csv' using 1:2\n";
   std::vector<std::string> warnings;

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "support/input_error_expectations.hpp"
+
 namespace rackopt {
 namespace {
 
@@ -88,19 +90,15 @@ TEST(ParseCount, WholeNumbersOnly) {
 // Asserts that parsing throws an InputError whose message contains `needle`,
 // and that the mark and key given by the caller are carried through.
 void expect_error(const std::string& text, K kind, const std::string& needle) {
-  const SourceMark where{"f.yaml", 7, 12};
-  try {
-    parse_quantity(text, kind, where, "pinion.pressure_angle");
-    ADD_FAILURE() << "no error for '" << text << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.message()).find(needle), std::string::npos)
-        << "message '" << e.message() << "' lacks '" << needle << "'";
-    EXPECT_EQ(e.mark().file, "f.yaml");
-    EXPECT_EQ(e.mark().line, 7);
-    EXPECT_EQ(e.mark().column, 12);
-    EXPECT_EQ(e.key_path(), "pinion.pressure_angle");
-    EXPECT_NE(std::string(e.what()).find("f.yaml:7:12: pinion.pressure_angle: "), std::string::npos) << e.what();
-  }
+  SCOPED_TRACE("parsing '" + text + "'");
+  test_support::expect_input_error(
+      [&] { parse_quantity(text, kind, SourceMark{"f.yaml", 7, 12}, "pinion.pressure_angle"); },
+      {.file = "f.yaml",
+       .line = 7,
+       .column = 12,
+       .key = "pinion.pressure_angle",
+       .in_message = {needle},
+       .in_what = {"f.yaml:7:12: pinion.pressure_angle: "}});
 }
 
 TEST(ParseQuantity, ErrorsNameTheProblemAndTheAllowedUnits) {
@@ -257,16 +255,10 @@ TEST(ParseQuantity, BareUnitOverridesTheKindDefault) {
 }
 
 void expect_kind_error(const std::string& text, K kind, const std::string& needle) {
-  try {
-    parse_quantity(text, kind, SourceMark{"f.yaml", 3, 5}, "wear.hardness.surface");
-    ADD_FAILURE() << "no error for '" << text << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.message()).find(needle), std::string::npos)
-        << "message '" << e.message() << "' lacks '" << needle << "'";
-    EXPECT_EQ(e.mark().line, 3);
-    EXPECT_EQ(e.mark().column, 5);
-    EXPECT_EQ(e.key_path(), "wear.hardness.surface");
-  }
+  SCOPED_TRACE("parsing '" + text + "'");
+  test_support::expect_input_error(
+      [&] { parse_quantity(text, kind, SourceMark{"f.yaml", 3, 5}, "wear.hardness.surface"); },
+      {.line = 3, .column = 5, .key = "wear.hardness.surface", .in_message = {needle}});
 }
 
 TEST(ParseQuantity, NewKindErrorsListTheAllowedUnits) {

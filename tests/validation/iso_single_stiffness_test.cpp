@@ -11,6 +11,7 @@
 #include "rackopt/output/stiffness_report.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/iso_single_stiffness.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt {
 namespace {
@@ -55,7 +56,7 @@ TEST(IsoSingleStiffness, ShippedDrivesSitNearTheStandard) {
   // model: the FE-grade single pair lands within 1.5 % of it on the shipped
   // drives (the papers' tooth model: 42-46 % above); the band is 10 %.
   for (const char* name : {"gantry_axis", "large_module", "rack_railway", "ship_lift"}) {
-    const Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + name + ".yaml");
+    const Drive d = test_support::load_shipped_problem(std::string(name) + ".yaml");
     const MeshGeometry g = build_mesh_geometry(d);
     const double ratio = single_pair_stiffness_at_pitch_point(d, g) / iso_single_stiffness(d).stiffness;
     std::printf("[ info ] %s: model single pair at the pitch point / ISO c' b = %.3f\n", name, ratio);

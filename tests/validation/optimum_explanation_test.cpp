@@ -18,6 +18,7 @@
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt::study {
 namespace {
@@ -39,8 +40,7 @@ TEST(OptimumExplanation, MultiplierOfALinearCostIsThePriceOfTheConstrainedQuanti
   const std::string problems = std::string(RACKOPT_SOURCE_DIR) + "/problems";
   const StudySpec spec = studyfile::load_study_text(kStudy, "explain.yaml", problems);
   RunOptions o;
-  o.out_dir = (std::filesystem::temp_directory_path() / ("rackopt_explain_" + std::to_string(::getpid()))).string();
-  std::filesystem::remove_all(o.out_dir);
+  o.out_dir = test_support::scratch_path("explain");
   const StudyResult r = run_study(spec, o);
   const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   std::ifstream md_file(o.out_dir + "/report.md");
@@ -98,8 +98,7 @@ TEST(OptimumExplanation, SweepReportRanksTheVariables) {
   text += "sweep: {method: grid, levels: 4}\n";
   const StudySpec spec = studyfile::load_study_text(text, "sweep.yaml", std::string(RACKOPT_SOURCE_DIR) + "/problems");
   RunOptions o;
-  o.out_dir = (std::filesystem::temp_directory_path() / ("rackopt_explain_sweep_" + std::to_string(::getpid()))).string();
-  std::filesystem::remove_all(o.out_dir);
+  o.out_dir = test_support::scratch_path("explain_sweep");
   const StudyResult r = run_study(spec, o);
   const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
   std::ifstream md_file(o.out_dir + "/report.md");

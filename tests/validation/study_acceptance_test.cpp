@@ -28,30 +28,14 @@
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/study/study_spec.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt::study {
 namespace {
 
 const std::string kStudies = std::string(RACKOPT_SOURCE_DIR) + "/studies/";
 
-// Results of this process only: a normal and a sanitizer build (or ctest -j)
-// may run this at the same time.
-std::filesystem::path test_root() {
-  return std::filesystem::temp_directory_path() / ("rackopt_acceptance_" + std::to_string(::getpid()));
-}
-std::string fresh_dir(const std::string& name) {
-  const auto dir = test_root() / name;
-  std::filesystem::remove_all(dir);
-  return dir.string();
-}
-class CleanUp : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(test_root(), ec);
-  }
-};
-[[maybe_unused]] ::testing::Environment* const clean_up = ::testing::AddGlobalTestEnvironment(new CleanUp);
+using test_support::scratch_path;
 
 RunOptions options_in(const std::string& dir, unsigned threads) {
   RunOptions o;
@@ -142,7 +126,7 @@ TEST(StudyAcceptance, RailwaySizingBeatsADenseGridAndRepeatsBitForBit) {
   ASSERT_FALSE(spec.objectives[0].maximize);
 
   const auto t0 = std::chrono::steady_clock::now();
-  const StudyResult a = run_study(spec, options_in(fresh_dir("sizing_a"), 1));
+  const StudyResult a = run_study(spec, options_in(scratch_path("sizing_a"), 1));
   const double optimize_seconds = seconds_since(t0);
   ASSERT_TRUE(a.best) << a.status;
   ASSERT_TRUE(a.best->feasible) << a.status;
@@ -160,7 +144,7 @@ TEST(StudyAcceptance, RailwaySizingBeatsADenseGridAndRepeatsBitForBit) {
   grid.variables[variable_index(grid, "rack.span")].levels = 181;
   grid.variables[variable_index(grid, "mounting.clearance")].levels = 9;
   const auto t1 = std::chrono::steady_clock::now();
-  const StudyResult g = run_study(grid, options_in(fresh_dir("sizing_grid"), 2));
+  const StudyResult g = run_study(grid, options_in(scratch_path("sizing_grid"), 2));
   const double grid_seconds = seconds_since(t1);
   ASSERT_EQ(g.sweep_points.size(), 3u * 5u * 181u * 9u);
   ASSERT_TRUE(g.best) << "no feasible grid point: the grid is too coarse to test anything";
@@ -205,7 +189,7 @@ TEST(StudyAcceptance, RailwaySizingBeatsADenseGridAndRepeatsBitForBit) {
   EXPECT_GE(exact.values[0].value, *floor->min * (1 - spec.solver.constraint_tolerance));
 
   // A second run: the same best, bit for bit.
-  const StudyResult b = run_study(spec, options_in(fresh_dir("sizing_b"), 2));
+  const StudyResult b = run_study(spec, options_in(scratch_path("sizing_b"), 2));
   ASSERT_TRUE(b.best);
   EXPECT_EQ(bits(a.best->x), bits(b.best->x));
   EXPECT_EQ(bits(a.best->objectives), bits(b.best->objectives));
@@ -240,7 +224,7 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
                                          {"pareto.points=7", "solver.max_evaluations=15"});
   ASSERT_EQ(spec.kind, StudyKind::kPareto);
   ASSERT_EQ(spec.objectives.size(), 3u);
-  const StudyResult r = run_study(spec, options_in(fresh_dir("ship_lift_front"), 2));
+  const StudyResult r = run_study(spec, options_in(scratch_path("ship_lift_front"), 2));
   ASSERT_GE(r.front.size(), 3u) << r.status;
   std::printf("ship lift front: %zu points, %zu evaluations, status %s\n", r.front.size(), r.evaluations,
               std::string(to_string(r.status)).c_str());
@@ -278,7 +262,7 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   coarse.kind = StudyKind::kSweep;
   coarse.sweep.method = SweepSpec::Method::kGrid;
   coarse.sweep.levels = 4;
-  const StudyResult s = run_study(coarse, options_in(fresh_dir("ship_lift_grid"), 2));
+  const StudyResult s = run_study(coarse, options_in(scratch_path("ship_lift_grid"), 2));
   std::vector<std::vector<double>> all = f;
   for (const DesignResult& p : s.sweep_points)
     if (p.feasible) all.push_back(minimized(spec, p));
@@ -331,7 +315,7 @@ namespace {
 // support spacing) may be both feasible and cheaper.
 TEST(StudyAcceptance, GantrySizingLandsOnASmallModuleThatTheNextSmallerCannotUndercut) {
   const StudySpec spec = studyfile::load_study_file(kStudies + "gantry_sizing.yaml");
-  const StudyResult a = run_study(spec, options_in(fresh_dir("gantry"), 1));
+  const StudyResult a = run_study(spec, options_in(scratch_path("gantry"), 1));
   ASSERT_TRUE(a.best && a.best->feasible) << a.status;
   const std::size_t im = variable_index(spec, "pinion.module");
   const std::vector<double>& modules = spec.variables[im].values;
@@ -356,7 +340,7 @@ TEST(StudyAcceptance, GantrySizingLandsOnASmallModuleThatTheNextSmallerCannotUnd
   DesignVariable& span = grid.variables[variable_index(grid, "rack.span")];
   span.values = {span.upper};  // the support cost falls with the span; nothing else depends on it here
   span.lower = span.upper;
-  const StudyResult g = run_study(grid, options_in(fresh_dir("gantry_grid"), 2));
+  const StudyResult g = run_study(grid, options_in(scratch_path("gantry_grid"), 2));
   ASSERT_EQ(g.sweep_points.size(), 40u * 5u);
   for (const DesignResult& p : g.sweep_points) {
     if (p.feasible) {

@@ -6,11 +6,12 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::test {
 
 inline Drive problem(const std::string& file, const std::vector<std::string>& overrides = {}) {
-  return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/" + file, overrides);
+  return test_support::load_shipped_problem(file, overrides);
 }
 
 }  // namespace rackopt::test

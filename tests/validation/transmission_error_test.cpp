@@ -24,6 +24,7 @@
 #include "rackopt/studyfile/study_loader.hpp"
 
 #include "test_drives.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
@@ -344,8 +345,7 @@ TEST(ProfileRelief, ShippedStudyFlattensTheTransmissionError) {
   // As railway(): the relief on the papers' tooth model.
   spec.problem_overrides.insert(spec.problem_overrides.end(), kPaperToothModel.begin(), kPaperToothModel.end());
   study::RunOptions o;
-  o.out_dir = (std::filesystem::temp_directory_path() / "rackopt_te_study_test").string();
-  std::filesystem::remove_all(o.out_dir);
+  o.out_dir = test_support::scratch_path("te_study");
   o.threads = 1;
   const study::StudyResult r = study::run_study(spec, o);
   std::filesystem::remove_all(o.out_dir);

@@ -6,10 +6,11 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt::test {
 
-inline Drive ship_lift() { return load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"); }
+inline Drive ship_lift() { return test_support::load_shipped_problem("ship_lift.yaml"); }
 
 // The wear paper's polynomial H = -0.25h^3 - 1.6786h^2 + 2h + 596 (HB, h in mm),
 // converted to SI (Pa, h in m): c_i [HB/mm^i] * kPaPerHB * 1e3^i.

@@ -13,6 +13,7 @@
 #include "rackopt/wear_reliability/life_at_R_check.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt {
 namespace {
@@ -34,7 +35,7 @@ double phi_inverse(double p) {
   return 0.5 * (lo + hi);
 }
 
-std::string ship_lift_path() { return std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml"; }
+std::string ship_lift_path() { return test_support::shipped_problem_path("ship_lift.yaml"); }
 
 // The shipped problem with only the life at R = 0.9 asked for, exact path.
 WearReliabilityResult life_at_090(Drive d) {

@@ -11,6 +11,7 @@
 
 #include "life_test_drives.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/shipped_problems.hpp"
 
 namespace rackopt {
 namespace {
@@ -80,7 +81,7 @@ TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
 // life(eps), docs/accuracy.md), with the same failure criterion, and the
 // exact map through the table agrees with the 60-step bisection.
 TEST(WearReliability, LifeTableMatchesDirectLivesAndBisection) {
-  Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
+  Drive d = test_support::load_shipped_problem("ship_lift.yaml");
   // The table's exactness needs a life monotone in the sampled contact
   // ratio. With the rack foundation on, this drive's life dips by 0.2 %
   // just above eps = 1.51 (the table then detects it and falls back, as it
@@ -130,7 +131,7 @@ TEST(WearReliability, LifeTableMatchesDirectLivesAndBisection) {
 // across it. Every sample keeps the criterion and, to the check tolerance's
 // order, the life of its direct evaluation.
 TEST(WearReliability, LifeTableDoesNotSmearAFailureModeSwitch) {
-  Drive d = load_problem(std::string(RACKOPT_SOURCE_DIR) + "/problems/ship_lift.yaml");
+  Drive d = test_support::load_shipped_problem("ship_lift.yaml");
   d.wear.update_profile = true;
   d.wear.profile_points = 60;  // cost
   d.wear.min_contact_ratio = 1.46;
