@@ -1,22 +1,15 @@
 #include "rackopt/doe/samplers.hpp"
 
-#include <gsl/gsl_qrng.h>
-
 #include <cmath>
 #include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
 
+#include "rackopt/core/sobol_sequence.hpp"
+
 namespace rackopt::doe {
 namespace {
-
-// GSL's Sobol generator works with 30-bit integers: every value it returns
-// is numerator / 2^30 (SOBOL_BIT_COUNT in gsl/qrng/sobol.c), and its
-// sequence counter overflows at 2^30 points.
-constexpr int kSobolBits = 30;
-constexpr double kSobolScale = 1073741824.0;  // 2^30
-constexpr std::size_t kSobolMaxPoints = (std::size_t{1} << kSobolBits) - 1;
 
 void check_box(std::span<const double> lower, std::span<const double> upper, const char* who) {
   if (lower.size() != upper.size()) {
@@ -137,13 +130,13 @@ std::vector<std::vector<double>> sobol_points(std::span<const double> lower,
                                               std::uint64_t seed) {
   check_box(lower, upper, "sobol_points");
   const std::size_t dim = lower.size();
-  if (dim > kSobolMaxDimension || dim > gsl_qrng_sobol->max_dimension) {
+  if (dim > kSobolMaxDimension || dim > sobol_max_dimension()) {
     throw std::invalid_argument("sobol_points: " + std::to_string(dim) +
                                 " variables, but the Sobol sequence (GSL) supports at most " +
                                 std::to_string(kSobolMaxDimension) +
                                 "; use latin_hypercube for more variables");
   }
-  if (n > kSobolMaxPoints) {
+  if (n > kSobolMaxIndex) {
     throw std::invalid_argument("sobol_points: at most 2^30 - 1 points, asked for " + std::to_string(n));
   }
   std::vector<std::vector<double>> points(n, std::vector<double>(dim));
@@ -159,23 +152,10 @@ std::vector<std::vector<double>> sobol_points(std::span<const double> lower,
     p[d] = to_box(lower[d], upper[d], static_cast<double>(k ^ mask[d]) / kSobolScale);
   };
 
-  // Index 0 of the sequence is the origin; gsl_qrng_get starts at index 1.
-  for (std::size_t d = 0; d < dim; ++d) place(points[0], d, 0);
-  if (n == 1) return points;
-
-  std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> q(
-      gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(dim)), &gsl_qrng_free);
-  if (!q) throw std::runtime_error("sobol_points: GSL could not allocate the Sobol generator");
-  std::vector<double> u(dim);
-  for (std::size_t i = 1; i < n; ++i) {
-    if (gsl_qrng_get(q.get(), u.data()) != 0) {
-      throw std::runtime_error("sobol_points: GSL Sobol generator failed at point " + std::to_string(i));
-    }
-    for (std::size_t d = 0; d < dim; ++d) {
-      // Exact: GSL's values are integers over 2^30.
-      place(points[i], d, static_cast<std::uint32_t>(std::llround(u[d] * kSobolScale)));
-    }
-  }
+  // From the origin (index 0) on.
+  const std::vector<std::uint32_t> k = sobol_numerators(0, n, dim);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t d = 0; d < dim; ++d) place(points[i], d, k[i * dim + d]);
   return points;
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "rackopt/doe/samplers.hpp"
 #include "rackopt/solvers/adapters.hpp"
 #include "rackopt/solvers/evaluation_tracker.hpp"
 #include "rackopt/core/text.hpp"
@@ -144,26 +145,6 @@ std::optional<SolverSettingsRefusal> check_nlopt(const SolverSettings& s, const 
   return std::nullopt;
 }
 
-// Latin hypercube of `count` points in the box, from `seed` only. The
-// integer-to-double mapping is written out (not std::uniform_real_distribution,
-// whose algorithm differs between standard libraries).
-std::vector<std::vector<double>> latin_hypercube(std::size_t count, const std::vector<double>& lo,
-                                                 const std::vector<double>& up, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  auto unit = [&rng] { return static_cast<double>(rng() >> 11) * 0x1.0p-53; };
-  std::vector<std::vector<double>> points(count, std::vector<double>(lo.size()));
-  std::vector<std::size_t> strata(count);
-  for (std::size_t d = 0; d < lo.size(); ++d) {
-    for (std::size_t k = 0; k < count; ++k) strata[k] = k;
-    for (std::size_t k = count; k > 1; --k) std::swap(strata[k - 1], strata[rng() % k]);  // Fisher-Yates
-    for (std::size_t k = 0; k < count; ++k) {
-      const double u = (static_cast<double>(strata[k]) + unit()) / static_cast<double>(count);
-      points[k][d] = std::clamp(lo[d] + u * (up[d] - lo[d]), lo[d], up[d]);
-    }
-  }
-  return points;
-}
-
 }  // namespace
 
 ProblemShape shape_of(const Problem& problem) {
@@ -226,7 +207,7 @@ SolverResult minimize(const Problem& problem, std::span<const double> x0, const 
 
   std::vector<std::vector<double>> start_points{x0c};
   if (settings.starts > 1) {
-    auto design = latin_hypercube(static_cast<std::size_t>(settings.starts - 1), lo, up, settings.seed);
+    auto design = doe::latin_hypercube(lo, up, static_cast<std::size_t>(settings.starts - 1), settings.seed);
     start_points.insert(start_points.end(), design.begin(), design.end());
   }
 

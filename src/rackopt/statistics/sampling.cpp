@@ -1,6 +1,5 @@
 #include "rackopt/statistics/sampling.hpp"
 
-#include <gsl/gsl_qrng.h>
 
 #include <algorithm>
 #include <cmath>
@@ -48,8 +47,6 @@ PointSet pseudo_random_points(std::size_t count, std::size_t dimension, std::uin
   return p;
 }
 
-std::size_t sobol_max_dimension() { return gsl_qrng_sobol->max_dimension; }
-
 PointSet sobol_points(std::size_t count, std::size_t dimension, bool randomize,
                       std::uint64_t seed) {
   if (count < 1 || dimension < 1) bad("a point set needs at least one sample and one dimension");
@@ -60,13 +57,11 @@ PointSet sobol_points(std::size_t count, std::size_t dimension, bool randomize,
   if (count > (std::size_t{1} << 30))
     bad("Sobol sampling supports at most 2^30 points (GSL's 30-bit sequence), got " +
         std::to_string(count));
-  std::unique_ptr<gsl_qrng, void (*)(gsl_qrng*)> q(
-      gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(dimension)), gsl_qrng_free);
-  if (!q) throw std::runtime_error("gsl_qrng_alloc(sobol) failed");
   PointSet p{count, dimension, std::vector<double>(count * dimension)};
-  std::size_t first = 0;
-  if (randomize) first = 1;  // row 0 stays the origin, which the shift moves inside
-  for (std::size_t i = first; i < count; ++i) gsl_qrng_get(q.get(), &p.u[i * dimension]);
+  // Randomized: from the origin, which the shift moves inside; plain: from
+  // index 1 (the origin is on the edge of every input's range).
+  const std::vector<std::uint32_t> k = sobol_numerators(randomize ? 0 : 1, count, dimension);
+  for (std::size_t i = 0; i < k.size(); ++i) p.u[i] = static_cast<double>(k[i]) / kSobolScale;
   if (randomize) {
     for (std::size_t j = 0; j < dimension; ++j) {
       const double s = counter_uniform(seed, kShiftStream, j);

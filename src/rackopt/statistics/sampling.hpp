@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "rackopt/core/parallel_for.hpp"
+#include "rackopt/core/sobol_sequence.hpp"  // sobol_max_dimension()
 
 namespace rackopt::statistics {
 
@@ -40,9 +41,6 @@ double counter_uniform(std::uint64_t seed, std::uint64_t stream, std::uint64_t c
 // Pseudo-random points: coordinate j of sample i is counter_uniform(seed, i, j).
 // count >= 1 and dimension >= 1, else InputError.
 PointSet pseudo_random_points(std::size_t count, std::size_t dimension, std::uint64_t seed);
-
-// The largest Sobol dimension GSL supports (gsl_qrng_sobol->max_dimension = 40).
-std::size_t sobol_max_dimension();
 
 // Sobol points from GSL's gsl_qrng_sobol.
 //  * dimension > sobol_max_dimension() throws InputError: GSL would silently
