@@ -280,6 +280,28 @@ TEST_F(StoreTest, OtherStudyInTheFolderIsRefusedWithAdvice) {
   EXPECT_EQ(store.size(), 1u);
 }
 
+// Fingerprints of another format cannot be compared: refused by name, the
+// file untouched; a file from before formats were stored counts as "1".
+TEST_F(StoreTest, AnotherFingerprintFormatIsRefusedByName) {
+  StoreOptions v1;
+  v1.fingerprint_format = "1";
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, false, v1);
+    store.append(tricky_evaluation());
+  }
+  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.fingerprint_format'"), "1");
+  StoreOptions v2;
+  v2.fingerprint_format = "2";
+  const std::string msg = thrown_message([&] { EvaluationStore::open(db_, "fp", vars_, true, v2); });
+  EXPECT_NE(msg.find("fingerprint of format 1, and this rackopt computes format 2"), std::string::npos) << msg;
+  EXPECT_EQ(EvaluationStore::open(db_, "fp", vars_, true, v1).size(), 1u);
+
+  const std::string old_db = (fs::path(db_).parent_path() / "old.sqlite").string();
+  write_schema_1_file(old_db, {1.0, 2.0});
+  EXPECT_THROW(EvaluationStore::open(old_db, "fp", vars_, true, v2), OutputFolderConflict);
+  EXPECT_EQ(EvaluationStore::open(old_db, "fp", vars_, true, v1).size(), 1u);
+}
+
 TEST_F(StoreTest, ExistingResultsNeedResume) {
   {
     auto store = EvaluationStore::open(db_, "fp", vars_, false);

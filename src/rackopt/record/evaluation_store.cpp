@@ -21,6 +21,8 @@ constexpr const char* kSchemaVersion = "rackopt-evaluations 2";
 constexpr const char* kSchemaVersion1 = "rackopt-evaluations 1";
 constexpr const char* kSchemaKey = "rackopt.schema";
 constexpr const char* kFingerprintKey = "rackopt.study_fingerprint";
+constexpr const char* kFingerprintFormatKey = "rackopt.fingerprint_format";
+constexpr const char* kFirstFingerprintFormat = "1";  // files written before the format was stored
 
 constexpr const char* kCreateSchema = R"sql(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY NOT NULL, value TEXT NOT NULL) WITHOUT ROWID;
@@ -258,7 +260,8 @@ struct EvaluationStore::Impl {
     if (error) std::rethrow_exception(error);
   }
 
-  void load_or_create(const std::string& study_fingerprint, const std::vector<std::string>& variable_names,
+  void load_or_create(const std::string& study_fingerprint, const std::string& fingerprint_format,
+                      const std::vector<std::string>& variable_names,
                       bool resume);
 
   std::int64_t metric_id(const std::string& name) {
@@ -371,7 +374,7 @@ EvaluationStore EvaluationStore::open(const std::string& path, const std::string
   impl->exec("BEGIN IMMEDIATE", "locking the store");
   impl->in_transaction = true;
   try {
-    impl->load_or_create(study_fingerprint, variable_names, resume);
+    impl->load_or_create(study_fingerprint, options.fingerprint_format, variable_names, resume);
   } catch (...) {
     // Leave the file as it was (a refused open must not claim it).
     sqlite3_exec(impl->db, "ROLLBACK", nullptr, nullptr, nullptr);
@@ -382,7 +385,7 @@ EvaluationStore EvaluationStore::open(const std::string& path, const std::string
   return EvaluationStore(std::move(impl));
 }
 
-void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
+void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint, const std::string& fingerprint_format,
                                            const std::vector<std::string>& variable_names, bool resume) {
   exec(kCreateSchema, "creating the tables");
   const auto schema = read_meta(kSchemaKey);
@@ -399,6 +402,14 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
   }
   count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations"));
   if (count > 0) {
+    const std::string stored_format = read_meta(kFingerprintFormatKey).value_or(kFirstFingerprintFormat);
+    if (stored_format != fingerprint_format) {
+      throw OutputFolderConflict("'" + path + "' holds " + std::to_string(count) +
+                                 " evaluations identified by a study fingerprint of format " + stored_format +
+                                 ", and this rackopt computes format " + fingerprint_format +
+                                 ": it cannot tell whether they belong to this study. Choose another --out "
+                                 "folder, or delete '" + path + "' to start this study afresh.");
+    }
     const auto stored = read_meta(kFingerprintKey).value_or("");
     if (stored != study_fingerprint) {
       throw OutputFolderConflict("'" + path + "' holds " + std::to_string(count) +
@@ -430,6 +441,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
     exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
     write_meta(kSchemaKey, kSchemaVersion);
     write_meta(kFingerprintKey, study_fingerprint);
+    write_meta(kFingerprintFormatKey, fingerprint_format);
     Stmt s = prepare("INSERT INTO variables(position, name) VALUES(?1, ?2)");
     for (std::size_t i = 0; i < variable_names.size(); ++i) {
       sqlite3_bind_int64(s.get(), 1, static_cast<std::int64_t>(i));

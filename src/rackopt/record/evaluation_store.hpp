@@ -62,6 +62,11 @@ class OutputFolderConflict : public std::runtime_error {
 struct StoreOptions {
   std::size_t commit_every = 1000;       // commit once this many appends are pending (>= 1)
   double commit_interval_seconds = 0.2;  // ... or once an append comes this long after the last commit
+  // How the caller computes study_fingerprint. Stored with it; a file whose
+  // evaluations were recorded under another format is refused (its
+  // fingerprints cannot be compared). A file written before formats were
+  // stored counts as format "1".
+  std::string fingerprint_format = "1";
 };
 
 class EvaluationStore {

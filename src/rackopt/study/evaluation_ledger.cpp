@@ -32,7 +32,10 @@ EvaluationLedger::EvaluationLedger(const StudySpec& spec, const RunOptions& opti
     : spec_(spec), options_(options), base_(base), threads_(resolve_threads(options.threads)) {}
 
 void EvaluationLedger::open_store(const std::string& path) {
-  store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume));
+  record::StoreOptions store_options;
+  store_options.fingerprint_format = kStudyFingerprintFormat;
+  store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume,
+                                               store_options));
   preexisting_rows_ = static_cast<std::int64_t>(store_->size());
   store_->set_meta("status", "running");
   store_->set_meta("kind", kind_name(spec_.kind));
