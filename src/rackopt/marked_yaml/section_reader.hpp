@@ -85,6 +85,10 @@ class SectionReader : public MarkedMap {
   std::optional<double> quantity_in(const std::string& key, QuantityKind kind, const ValueRange& range,
                                     const std::string& why = {}, std::string_view bare_unit = {},
                                     const std::string& expected = {}) const;
+  // quantity_in of a plain number (no unit).
+  std::optional<double> plain_number(const std::string& key, const ValueRange& range) const {
+    return quantity_in(key, QuantityKind::kDimensionless, range);
+  }
   // A whole number in `range` ("2147483648" is out of range, not an overflow).
   std::optional<long long> integer(const std::string& key, const ValueRange& range) const;
 
