@@ -179,15 +179,14 @@ SectionReader read_metric_options(const SectionReader& top, StudySpec& spec) {
                     {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates", "cost"},
                     "{exact_quantile: on, reliability_samples: 1000}");
   spec.metric_options.exact_quantile = mo.flag("exact_quantile", spec.metric_options.exact_quantile);
-  spec.metric_options.reliability_samples =
-      static_cast<long>(mo.integer("reliability_samples", {1, kMaxReliabilitySamples}).value_or(-1));
+  if (const auto samples = mo.integer("reliability_samples", {1, kMaxReliabilitySamples}))
+    spec.metric_options.reliability_samples = static_cast<long>(*samples);
   // The study seed drives every random choice, the Monte Carlo included,
   // unless the study pins the Monte Carlo seed itself.
-  spec.metric_options.reliability_seed =
-      mo.has("reliability_seed") ? static_cast<long>(mo.integer("reliability_seed", {0, 2000000000}).value_or(0))
-                                 : static_cast<long>(spec.seed % 2000000001ULL);
-  spec.metric_options.bootstrap_replicates = static_cast<int>(
-      mo.integer("bootstrap_replicates", {20, 100000}).value_or(spec.metric_options.bootstrap_replicates));
+  spec.metric_options.reliability_seed = static_cast<long>(
+      mo.integer("reliability_seed", {0, 2000000000}).value_or(static_cast<long long>(spec.seed % 2000000001ULL)));
+  if (const auto replicates = mo.integer("bootstrap_replicates", {20, 100000}))
+    spec.metric_options.bootstrap_replicates = static_cast<int>(*replicates);
   {
     const SectionReader cost = study_section(mo.get("cost"), "metric_options.cost", mo.key_mark("cost"),
                                              {"rack_per_kg", "pinion_per_kg", "per_support", "rack_length"},

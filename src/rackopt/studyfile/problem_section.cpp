@@ -75,8 +75,8 @@ bool path_within(const std::string& path, const std::string& key) {
 
 }  // namespace
 
-StudyProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
-                                  const std::vector<std::string>& cli_problem_overrides, StudySpec& spec) {
+LoadedProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
+                                   const std::vector<std::string>& cli_problem_overrides, StudySpec& spec) {
   const auto problem_text = top.scalar("problem", "the path of a problem file");
   if (!problem_text) top.missing("problem", "the path of a problem file, e.g. ../problems/rack_railway.yaml");
   {
@@ -108,7 +108,7 @@ StudyProblem read_problem_section(const SectionReader& top, const std::string& b
     spec.problem_overrides.push_back(o);
     origins.push_back(OverrideOrigin{override_key(o), SourceMark{kCommandLine, 0, 0}, false});
   }
-  StudyProblem problem;
+  LoadedProblem problem;
   try {
     problem.tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
     problem.drive = drive_from_tree(problem.tree);

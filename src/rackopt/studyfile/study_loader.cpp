@@ -77,7 +77,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   spec.seed = read_seed(study, "seed", 1);
   const SourceMark kind_mark = study.value_mark("kind");
 
-  const StudyProblem problem = read_problem_section(top, base_dir, cli_problem_overrides, spec);
+  const LoadedProblem problem = read_problem_section(top, base_dir, cli_problem_overrides, spec);
   const Drive& drive = problem.drive;
   read_variables(top, problem, spec);
   const std::vector<MetricSite> metric_sites = read_metric_sections(top, spec);

@@ -24,20 +24,20 @@ std::vector<std::string> apply_study_overrides(MarkedNode& root, const std::vect
 
 // --- problem, problem_set
 // The problem as the study sees it: its tree (for designs) and its Drive.
-struct StudyProblem {
+struct LoadedProblem {
   ProblemTree tree;
   Drive drive;
 };
 // Fills spec.problem_path and spec.problem_overrides (problem_set, then
 // `cli_problem_overrides`) and loads the problem; its errors in an override
 // are reported where the study file or the command line wrote it.
-StudyProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
-                                  const std::vector<std::string>& cli_problem_overrides, study::StudySpec& spec);
+LoadedProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
+                                   const std::vector<std::string>& cli_problem_overrides, study::StudySpec& spec);
 
 // --- variables
 // Fills spec.variables; every bound and value is checked by building the
 // problem with it, and reported where the study wrote it.
-void read_variables(const SectionReader& top, const StudyProblem& problem, study::StudySpec& spec);
+void read_variables(const SectionReader& top, const LoadedProblem& problem, study::StudySpec& spec);
 
 // --- objectives, constraints, report, metric_options
 // Where a metric was written, for re-throwing its set-up errors there.

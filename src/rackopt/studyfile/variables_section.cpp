@@ -19,34 +19,15 @@ namespace {
 // Numeric keys named in messages when a variable key is not one (filtered
 // through problem_key_kind so that the list stays true to the schema).
 std::vector<std::string> numeric_key_examples() {
-  static const char* const kCandidates[] = {"pinion.teeth",
-                                            "pinion.module",
-                                            "pinion.pressure_angle",
-                                            "pinion.face_width",
-                                            "pinion.profile_shift",
-                                            "pinion.addendum",
-                                            "pinion.dedendum",
-                                            "pinion.tip_radius",
-                                            "pinion.bore_radius",
-                                            "rack.addendum",
-                                            "rack.dedendum",
-                                            "rack.face_width",
-                                            "rack.body_height",
-                                            "rack.body_width",
-                                            "rack.span",
-                                            "rack.tooth_offset",
-                                            "mounting.clearance",
-                                            "load.force",
-                                            "load.torque",
-                                            "faults[0].depth",
-                                            "faults[0].length",
-                                            "faults[0].width",
-                                            "faults[0].start",
-                                            "wear.coefficient",
-                                            "wear.max_depth",
-                                            "wear.rack_hardness.case_depth",
-                                            "wear.rack_hardness.surface",
-                                            "wear.pinion_hardness.case_depth"};
+  static const char* const kCandidates[] = {
+      "pinion.teeth",        "pinion.module",     "pinion.pressure_angle",        "pinion.face_width",
+      "pinion.profile_shift", "pinion.addendum",  "pinion.dedendum",              "pinion.tip_radius",
+      "pinion.bore_radius",  "rack.addendum",     "rack.dedendum",                "rack.face_width",
+      "rack.body_height",    "rack.body_width",   "rack.span",                    "rack.tooth_offset",
+      "mounting.clearance",  "load.force",        "load.torque",                  "faults[0].depth",
+      "faults[0].length",    "faults[0].width",   "faults[0].start",              "wear.coefficient",
+      "wear.max_depth",      "wear.rack_hardness.case_depth", "wear.rack_hardness.surface",
+      "wear.pinion_hardness.case_depth"};
   std::vector<std::string> out;
   for (const char* k : kCandidates) {
     if (problem_key_kind(k)) out.emplace_back(k);
@@ -137,7 +118,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
       if (!s.has("upper")) s.missing("upper", std::string("the upper bound; a variable is ") + forms);
       lower_site = read_value(*s.get("lower"), s.child_path("lower"), v.kind);
       upper_site = read_value(*s.get("upper"), s.child_path("upper"), v.kind);
-      v.levels = static_cast<int>(s.integer("levels", {2, 100000}).value_or(0));
+      if (const auto levels = s.integer("levels", {2, 100000})) v.levels = static_cast<int>(*levels);
     }
     if (const MarkedNode* st = s.get("start")) start_site = read_value(*st, s.child_path("start"), v.kind);
   } else {
@@ -210,7 +191,7 @@ DesignVariable read_variable(const MarkedEntry& entry, VariableSites& sites) {
 
 }  // namespace
 
-void read_variables(const SectionReader& top, const StudyProblem& problem, StudySpec& spec) {
+void read_variables(const SectionReader& top, const LoadedProblem& problem, StudySpec& spec) {
   std::vector<VariableSites> variable_sites;
   if (const MarkedNode* vars = top.get("variables")) {
     if (!vars->is_map()) {
