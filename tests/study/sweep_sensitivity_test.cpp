@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -20,7 +21,7 @@ constexpr double kPi = std::numbers::pi;
 
 using Model = std::function<double(const std::vector<double>&)>;
 
-DesignVariable variable(const std::string& key, double lower, double upper, int levels = 0) {
+DesignVariable variable(const std::string& key, double lower, double upper, std::optional<int> levels = std::nullopt) {
   DesignVariable v;
   v.key = key;
   v.lower = lower;
@@ -53,7 +54,7 @@ std::vector<std::vector<double>> grid_of(const StudySpec& spec) {
   std::vector<std::vector<double>> levels;
   for (const auto& v : spec.variables)
     levels.push_back(v.discrete() ? v.values
-                                  : doe::linspace_levels(v.lower, v.upper, v.levels > 0 ? v.levels : spec.sweep.levels));
+                                  : doe::linspace_levels(v.lower, v.upper, v.levels.value_or(spec.sweep.levels)));
   return doe::full_grid(levels);
 }
 

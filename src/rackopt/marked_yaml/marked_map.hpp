@@ -1,9 +1,9 @@
 // One map of a marked YAML tree (a problem section, a study section) as the
 // loaders read it: unknown keys are refused on construction with "did you
 // mean" and the allowed list, values are read as scalars with their marks,
-// missing keys are reported at the map's own mark. The problem loader and
-// the study loader add their typed readers on top, so both files give the
-// same errors for the same mistakes.
+// missing keys are reported at the map's own mark. SectionReader
+// (section_reader.hpp) adds the typed readers both loaders use, so both
+// files give the same errors for the same mistakes.
 #pragma once
 
 #include <optional>

@@ -174,9 +174,9 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   if (reliability) {
     const std::size_t n_inputs = drive.reliability.inputs.size();
     const bool monte_carlo = n_inputs >= 2 || (n_inputs == 1 && !o.exact_quantile);
-    if (monte_carlo && o.bootstrap_replicates != 0 && o.bootstrap_replicates < statistics::kMinBootstrapReplicates)
-      missing("bootstrap_replicates", "must be 0 (the problem's reliability.bootstrap_replicates) or >= " +
-                                          std::to_string(statistics::kMinBootstrapReplicates));
+    if (monte_carlo && o.bootstrap_replicates && *o.bootstrap_replicates < statistics::kMinBootstrapReplicates)
+      missing("bootstrap_replicates", "must be >= " + std::to_string(statistics::kMinBootstrapReplicates) +
+                                          " (or absent: the problem's reliability.bootstrap_replicates)");
   }
 }
 
@@ -257,10 +257,14 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       d.reliability.reliabilities = rel.reliabilities;
       d.reliability.times.clear();
       WearReliabilityOptions ro = wear_reliability_options(drive);
-      ro.samples = exact ? 1 : o.reliability_samples;
-      ro.seed = o.reliability_seed;
+      if (exact) {
+        ro.samples = 1;
+      } else if (o.reliability_samples) {
+        ro.samples = *o.reliability_samples;
+      }
+      if (o.reliability_seed) ro.seed = *o.reliability_seed;
       ro.threads = std::max(1u, o.threads);
-      if (o.bootstrap_replicates > 0) ro.bootstrap_replicates = o.bootstrap_replicates;
+      if (o.bootstrap_replicates) ro.bootstrap_replicates = *o.bootstrap_replicates;
       // Exact path: the life at R is one direct life at the input's quantile
       // and no R(t) is asked for, so a life table (about 11 model lives)
       // would cost more than the one sample it serves (9.4 ms vs 3 ms).

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <span>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,9 +65,11 @@ struct MetricOptions {
 
   // wear_life_at_R (docs/metrics.md)
   bool exact_quantile = true;      // one random input: life at R from its quantile (no sampling error)
-  long reliability_samples = -1;   // Monte Carlo path: > 0 overrides reliability.samples
-  long reliability_seed = -1;      // >= 0 overrides reliability.seed (common random numbers either way)
-  int bootstrap_replicates = 0;    // Monte Carlo path: KS test and fit choice (>= 20); 0 = reliability.bootstrap_replicates of the problem
+  // Each of the next three, when given, overrides the problem's reliability
+  // section; absent, the problem's value is used.
+  std::optional<long> reliability_samples;   // Monte Carlo path: > 0
+  std::optional<long> reliability_seed;      // >= 0 (common random numbers either way)
+  std::optional<int> bootstrap_replicates;   // Monte Carlo path: KS test and fit choice (>= 20)
   unsigned threads = 1;            // Monte Carlo path threads; results do not depend on it
 };
 

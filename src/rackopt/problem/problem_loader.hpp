@@ -13,6 +13,7 @@
 #include "rackopt/core/drive.hpp"
 #include "rackopt/core/error.hpp"
 #include "rackopt/marked_yaml/marked_tree.hpp"
+#include "rackopt/problem/problem_key_schema.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt {
@@ -75,14 +76,5 @@ std::vector<std::string> problem_variants(const std::string& path);
 // A = b h, I = b h^3 / 12, shear area = A / 1.2 (rectangle, Timoshenko
 // kappa = 5/6), neutral axis h/2 below the tooth root line.
 RackSection rectangular_rack_section(double width, double height);
-
-// The quantity kind of a numeric problem key, so that other inputs (study
-// bounds, sweeps) parse its values the same way. Accepts concrete paths
-// ("materials.steel.E", "faults[0].depth", "reliability.times[2]",
-// "wear.rack_hardness.case_depth"). nullopt for keys that are not numbers
-// (names, on/off switches, choices), for unknown keys, and for the
-// parameters of reliability.random[n] (their kind follows the `input`) and
-// polynomial coefficients (their unit follows depth_unit/hardness_unit).
-std::optional<QuantityKind> problem_key_kind(std::string_view key_path);
 
 }  // namespace rackopt

@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "rackopt/marked_yaml/marked_map.hpp"
+#include "rackopt/marked_yaml/section_reader.hpp"
 #include "rackopt/units/units.hpp"
 
 namespace rackopt {
@@ -34,9 +34,9 @@ struct Form {
   std::string optional;               // shift / median_factor
 };
 
-class Item : public MarkedMap {
+class Item : public SectionReader {
  public:
-  using MarkedMap::MarkedMap;
+  using SectionReader::SectionReader;
 
   std::optional<double> quantity(const std::string& key, QuantityKind kind) const {
     const auto text = scalar(key, expected(kind));
@@ -87,14 +87,10 @@ RandomInput read_random_input(const MarkedNode& item, const std::string& path) {
   std::vector<std::string> inputs;
   for (const auto& r : kRandomInputs) inputs.emplace_back(r.name);
   const auto choice = [&](const std::string& key, const std::vector<std::string>& options) {
-    const auto text = b.scalar(key, "one of " + join(options, " | "));
-    if (!text) b.missing(key, key == "input" ? "the uncertain input: " + join(options, " | ")
-                                             : "one of " + join(options, " | "));
-    for (const auto& o : options) {
-      if (text->first == o) return o;
-    }
-    throw InputError(text->second, b.child_path(key),
-                     "'" + text->first + "' is not allowed; allowed: " + join(options, " | "));
+    const auto value = b.choice(key, options);
+    if (!value) b.missing(key, key == "input" ? "the uncertain input: " + join(options, " | ")
+                                              : "one of " + join(options, " | "));
+    return *value;
   };
   const std::string input = choice("input", inputs);
   const RandomInputKind* which = nullptr;

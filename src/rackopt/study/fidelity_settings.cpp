@@ -29,13 +29,12 @@ std::vector<std::pair<std::string, std::string>> fidelity_settings(const Drive& 
     if (exact) {
       out.emplace_back("life at R", "exact quantile of the one random input (no sampling)");
     } else if (inputs > 0) {
-      out.emplace_back("reliability samples", num(o.reliability_samples > 0 ? static_cast<double>(o.reliability_samples)
-                                                                            : d.reliability.samples));
-      out.emplace_back("reliability seed", num(o.reliability_seed >= 0 ? static_cast<double>(o.reliability_seed)
-                                                                       : static_cast<double>(d.reliability.seed)));
+      out.emplace_back("reliability samples", num(o.reliability_samples ? static_cast<double>(*o.reliability_samples)
+                                                                         : d.reliability.samples));
+      out.emplace_back("reliability seed", num(o.reliability_seed ? static_cast<double>(*o.reliability_seed)
+                                                                    : static_cast<double>(d.reliability.seed)));
       out.emplace_back("reliability sampling", d.reliability.sobol ? "sobol" : "pseudo");
-      out.emplace_back("bootstrap replicates", num(o.bootstrap_replicates > 0 ? o.bootstrap_replicates
-                                                                              : d.reliability.bootstrap_replicates));
+      out.emplace_back("bootstrap replicates", num(o.bootstrap_replicates.value_or(d.reliability.bootstrap_replicates)));
       out.emplace_back("life table", inputs == 1 ? on(d.reliability.life_table) + ", tolerance " +
                                                        num(d.reliability.life_table_tolerance)
                                                  : "off (several inputs)");

@@ -20,11 +20,11 @@ StudyStatus drive_single_design(const KindDriverContext& ctx, const std::optiona
     try {
       const Drive design = base.drive_at(start->design.x);
       WearReliabilityOptions wo = wear_reliability_options(design);
-      wo.samples = spec.metric_options.reliability_samples;
-      wo.seed = spec.metric_options.reliability_seed;
+      if (spec.metric_options.reliability_samples) wo.samples = *spec.metric_options.reliability_samples;
+      if (spec.metric_options.reliability_seed) wo.seed = *spec.metric_options.reliability_seed;
       wo.threads = ledger.threads();
-      if (spec.metric_options.bootstrap_replicates > 0)
-        wo.bootstrap_replicates = spec.metric_options.bootstrap_replicates;
+      if (spec.metric_options.bootstrap_replicates)
+        wo.bootstrap_replicates = *spec.metric_options.bootstrap_replicates;
       wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
       // Everything recorded is committed; the analysis itself is not
       // recorded (--resume redoes it): Ctrl-C may end it at once.

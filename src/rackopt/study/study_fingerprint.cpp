@@ -93,7 +93,9 @@ std::string study_fingerprint(const StudySpec& spec) {
     c.integer(v.values.size());
     for (double x : v.values) c.num(x);
     c.opt(v.start);
-    c.integer(static_cast<std::uint64_t>(static_cast<std::int64_t>(v.levels)));
+    // An absent value is written as the 0 that stood for it, so that the
+    // fingerprints of existing records stay what they are.
+    c.integer(static_cast<std::uint64_t>(static_cast<std::int64_t>(v.levels.value_or(0))));
   }
   for (const auto& o : spec.objectives) {
     c.key("objective");
@@ -121,9 +123,11 @@ std::string study_fingerprint(const StudySpec& spec) {
                    m.allowable_contact_rack, m.rack_root_radius})
     c.num(v);
   c.integer(m.exact_quantile ? 1 : 0);
-  c.integer(static_cast<std::uint64_t>(m.reliability_samples));
-  c.integer(static_cast<std::uint64_t>(m.reliability_seed));
-  c.integer(static_cast<std::uint64_t>(m.bootstrap_replicates));
+  // Absent values as the -1, -1 and 0 that stood for them, so that the
+  // fingerprints of existing records stay what they are.
+  c.integer(static_cast<std::uint64_t>(m.reliability_samples.value_or(-1)));
+  c.integer(static_cast<std::uint64_t>(m.reliability_seed.value_or(-1)));
+  c.integer(static_cast<std::uint64_t>(m.bootstrap_replicates.value_or(0)));
   // Cost weights only when not the defaults, so the fingerprints of studies
   // that do not use them stay what their records hold.
   const metrics::CostWeights default_cost;

@@ -61,7 +61,7 @@ std::optional<StudyRuleViolation> sweep_size(const StudySpec& spec) {
   std::vector<std::string> factors;
   for (const auto& v : spec.variables) {
     const std::size_t n =
-        v.discrete() ? v.values.size() : static_cast<std::size_t>(v.levels > 0 ? v.levels : spec.sweep.levels);
+        v.discrete() ? v.values.size() : static_cast<std::size_t>(v.levels.value_or(spec.sweep.levels));
     total *= static_cast<double>(n);
     factors.push_back(v.key + " " + std::to_string(n));
   }

@@ -56,7 +56,7 @@ struct DesignVariable {
   double lower = 0, upper = 0;
   std::vector<double> values;   // discrete set, SI, strictly ascending; empty = continuous
   std::optional<double> start;  // x0 (SI), inside [lower, upper]; a member of `values` when discrete
-  int levels = 0;               // sweep grid levels of a continuous variable (0 = sweep.levels)
+  std::optional<int> levels;    // sweep grid levels of a continuous variable (absent: sweep.levels)
   SourceMark mark;              // where the variable is declared
 
   bool discrete() const { return !values.empty(); }

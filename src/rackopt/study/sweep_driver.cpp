@@ -32,7 +32,7 @@ std::vector<std::vector<double>> sweep_points(const StudySpec& spec) {
         if (v.discrete()) {
           levels.push_back(v.values);
         } else {
-          levels.push_back(doe::linspace_levels(v.lower, v.upper, v.levels > 0 ? v.levels : spec.sweep.levels));
+          levels.push_back(doe::linspace_levels(v.lower, v.upper, v.levels.value_or(spec.sweep.levels)));
         }
       }
       return doe::full_grid(levels, spec.sweep.max_points);

@@ -51,14 +51,14 @@ double variance_of(const std::vector<double>& y, double mean) {
 
 double clamp01(double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; }
 
-// The levels the runner builds for a grid sweep (study_runner.cpp sweep_points).
+// The levels the runner builds for a grid sweep (sweep_driver.cpp).
 std::vector<std::vector<double>> grid_levels(const StudySpec& spec) {
   std::vector<std::vector<double>> levels;
   for (const DesignVariable& v : spec.variables) {
     if (v.discrete()) {
       levels.push_back(v.values);
     } else {
-      levels.push_back(doe::linspace_levels(v.lower, v.upper, v.levels > 0 ? v.levels : spec.sweep.levels));
+      levels.push_back(doe::linspace_levels(v.lower, v.upper, v.levels.value_or(spec.sweep.levels)));
     }
   }
   return levels;
