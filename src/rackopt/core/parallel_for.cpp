@@ -9,22 +9,33 @@
 
 namespace rackopt {
 
-void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body) {
+void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
+                  const ParallelControl& control) {
   const std::size_t nthreads = std::max<std::size_t>(1, std::min<std::size_t>(threads == 0 ? 1 : threads, count));
   std::atomic<std::size_t> next{0};
-  std::exception_ptr first_error;
-  std::mutex error_mutex;
+  std::atomic<bool> failed{false};
+  std::exception_ptr error;
+  std::size_t error_index = count;
+  std::size_t done = 0;
+  std::mutex mutex;  // error, error_index, done and the progress callback
   auto worker = [&] {
     for (;;) {
+      if (failed.load() || (control.stop && control.stop())) return;
       const std::size_t i = next.fetch_add(1);
       if (i >= count) return;
       try {
         body(i);
       } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!first_error) first_error = std::current_exception();
-        next.store(count);  // stop handing out work
-        return;
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (i < error_index) {
+          error = std::current_exception();
+          error_index = i;
+        }
+        failed.store(true);
+      }
+      if (control.progress) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        control.progress(++done, count);
       }
     }
   };
@@ -37,7 +48,7 @@ void parallel_for(std::size_t count, unsigned threads, const std::function<void(
     worker();
     for (auto& t : pool) t.join();
   }
-  if (first_error) std::rethrow_exception(first_error);
+  if (error) std::rethrow_exception(error);
 }
 
 }  // namespace rackopt

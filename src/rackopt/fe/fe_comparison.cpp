@@ -1,5 +1,7 @@
 #include "rackopt/fe/fe_comparison.hpp"
 
+#include "rackopt/core/parallel_for.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -205,50 +207,29 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
   }
   std::vector<FePosition> positions(out.rows.size());
   std::vector<ToothComplianceFe> teeth(jobs.size());
-  std::vector<std::exception_ptr> errors(jobs.size());
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  std::mutex progress_mutex;
-  std::size_t done = 0;
   auto stopped = [&] { return options.stop && options.stop(); };
-  auto worker = [&] {
-    for (;;) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= jobs.size() || failed.load() || stopped()) return;
-      const Job& job = jobs[i];
-      try {
-        const ComparedPosition& row = out.rows[static_cast<std::size_t>(job.row)];
-        if (job.pair < 0) {
-          positions[static_cast<std::size_t>(job.row)] = calls.mesh_position(ref, row.travel, options.fe);
-        } else {
-          teeth[i] = calls.tooth_compliance(ref, job.member, row.pairs[static_cast<std::size_t>(job.pair)].s,
-                                            options.fe);
-        }
-      } catch (...) {
-        errors[i] = std::current_exception();
-        failed.store(true);
-      }
-      if (options.progress) {
-        const std::lock_guard<std::mutex> lock(progress_mutex);
-        options.progress(++done, jobs.size());
-      }
-    }
-  };
   unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, jobs.size()));
   out.threads = std::max(1u, threads);
-  if (threads <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
+  ParallelControl control;
+  control.stop = stopped;
+  control.progress = options.progress;
+  try {
+    parallel_for(jobs.size(), out.threads, [&](std::size_t i) {
+      const Job& job = jobs[i];
+      const ComparedPosition& row = out.rows[static_cast<std::size_t>(job.row)];
+      if (job.pair < 0) {
+        positions[static_cast<std::size_t>(job.row)] = calls.mesh_position(ref, row.travel, options.fe);
+      } else {
+        teeth[i] = calls.tooth_compliance(ref, job.member, row.pairs[static_cast<std::size_t>(job.pair)].s, options.fe);
+      }
+    }, control);
+  } catch (...) {
+    // A stop ends the solves under way as failures: it is the stop that is reported.
+    if (stopped()) throw Interrupted("FE comparison: stopped by " + stop_reason());
+    throw;  // the first failure in position order, whatever the thread count
   }
-  // A stop ends the solves under way as failures: it is the stop that is reported.
   if (stopped()) throw Interrupted("FE comparison: stopped by " + stop_reason());
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);  // the first in position order, whatever the thread count
-  }
 
   // Assembly and errors.
   FeComparisonSummary& sum = out.summary;

@@ -38,8 +38,6 @@ class TrackedNlp : public Ipopt::TNLP {
       : t_(tracker), x_start_(std::move(x_start)), n_(tracker.dimension()),
         m_(tracker.num_inequality() + tracker.num_equality()) {}
 
-  Ipopt::SolverReturn final_status() const { return final_status_; }
-
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag, IndexStyleEnum& index_style) override {
     n = static_cast<Index>(n_);
     m = static_cast<Index>(m_);
@@ -130,18 +128,17 @@ class TrackedNlp : public Ipopt::TNLP {
     return t_.guard([&] { t_.poll(); });
   }
 
-  void finalize_solution(Ipopt::SolverReturn status, Index, const Number*, const Number*, const Number*, Index,
+  void finalize_solution(Ipopt::SolverReturn, Index, const Number*, const Number*, const Number*, Index,
                          const Number*, const Number*, Number, const Ipopt::IpoptData*,
                          Ipopt::IpoptCalculatedQuantities*) override {
-    // The solver's x is not used: the tracker holds the best point it saw.
-    final_status_ = status;
+    // Neither the solver's x nor its return code is used: the tracker holds
+    // the best point it saw, and OptimizeTNLP's status says how it ended.
   }
 
  private:
   EvaluationTracker& t_;
   std::vector<double> x_start_;
   std::size_t n_, m_;
-  Ipopt::SolverReturn final_status_ = Ipopt::UNASSIGNED;
 };
 
 const char* status_name(Ipopt::ApplicationReturnStatus s) {

@@ -39,7 +39,6 @@ class HardnessIntegral {
     for (int k = 1; k <= cells; ++k) G_[k] = G_[k - 1] + 0.5 * (H_[k - 1] + H_[k]) * dh_;
   }
   double total() const { return G_.back(); }
-  double depth_max() const { return D_; }
   double G(double h) const {
     if (h <= 0) return 0;
     if (h >= D_) return G_.back();
