@@ -19,6 +19,7 @@
 #include "rackopt/marked_yaml/marked_tree.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/units/units.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
@@ -178,7 +179,7 @@ TEST(InputSize, TextOverTheLimitIsRefusedBeforeParsing) {
 }
 
 TEST(InputSize, FileOverTheLimitIsRefusedReadingBounded) {
-  const std::string path = (std::filesystem::temp_directory_path() / "rackopt_hostile_big.yaml").string();
+  const std::string path = test_support::scratch_dir("hostile") + "/big.yaml";
   {
     std::ofstream out(path, std::ios::binary);
     out << "description: " << std::string(kMaxInputBytes, 'x') << "\n";

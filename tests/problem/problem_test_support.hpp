@@ -10,6 +10,7 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "support/input_error_expectations.hpp"
 
 namespace rackopt::test {
 
@@ -43,17 +44,9 @@ struct Expected {
 
 // Loads `text` as "t.yaml" with `overrides` and checks it throws the InputError `want`.
 inline void expect_error(const std::string& text, const Expected& want, const std::vector<std::string>& overrides = {}) {
-  try {
-    load_problem_text(text, "t.yaml", overrides);
-    ADD_FAILURE() << "no error; expected " << want.fragment;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.mark().file, want.file) << e.what();
-    EXPECT_EQ(e.mark().line, want.line) << e.what();
-    EXPECT_EQ(e.mark().column, want.column) << e.what();
-    EXPECT_EQ(e.key_path(), want.key) << e.what();
-    EXPECT_NE(std::string(e.message()).find(want.fragment), std::string::npos)
-        << "message: " << e.message() << "\nwanted: " << want.fragment;
-  }
+  test_support::expect_input_error([&] { (void)load_problem_text(text, "t.yaml", overrides); },
+                                   {.file = want.file, .line = want.line, .column = want.column, .key = want.key,
+                                    .in_message = {want.fragment}});
 }
 
 }  // namespace rackopt::test

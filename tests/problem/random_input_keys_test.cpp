@@ -3,6 +3,7 @@
 // they change: an override of such a key next to an absolute input is an
 // InputError naming both keys.
 #include "problem_test_support.hpp"
+#include "support/text_position.hpp"
 #include "rackopt/problem/random_input_keys.hpp"
 
 #include <gtest/gtest.h>
@@ -27,33 +28,11 @@ const std::string kWearWithRandom =
     "reliability:\n"                                             // 5
     "  random:\n";                                               // 6; items from line 7
 
-// "line:column" of `needle` in `text` (1-based), from the text itself.
-std::pair<int, int> position_of(const std::string& text, const std::string& needle) {
-  const std::size_t at = text.find(needle);
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < at && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
-}
-
 void expect_error_located_at(const std::string& text, const std::string& at, const std::string& key,
                              const std::vector<std::string>& parts) {
-  try {
-    (void)load_problem_text(text, "t.yaml");
-    ADD_FAILURE() << "no error; expected one for " << key;
-  } catch (const InputError& e) {
-    const auto [line, column] = position_of(text, at);
-    EXPECT_EQ(e.mark().line, line) << e.what();
-    EXPECT_EQ(e.mark().column, column) << e.what();
-    EXPECT_EQ(e.key_path(), key) << e.what();
-    for (const auto& p : parts) EXPECT_NE(std::string(e.what()).find(p), std::string::npos) << p << " in " << e.what();
-  }
+  const auto [line, column] = test_support::line_column_of(text, at);
+  test_support::expect_input_error([&] { (void)load_problem_text(text, "t.yaml"); },
+                                   {.line = line, .column = column, .key = key, .in_what = parts});
 }
 
 TEST(RandomInputForms, AroundTheDesignIsTheDefault) {

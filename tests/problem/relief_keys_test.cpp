@@ -19,17 +19,7 @@ namespace {
 using test::kMinimal;
 
 void expect_error_at(const std::string& text, int line, int column, const std::string& key, const std::string& fragment) {
-  try {
-    load_problem_text(text, "t.yaml");
-    ADD_FAILURE() << "no error; expected " << fragment;
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.mark().file, "t.yaml") << e.what();
-    EXPECT_EQ(e.mark().line, line) << e.what();
-    EXPECT_EQ(e.mark().column, column) << e.what();
-    EXPECT_EQ(e.key_path(), key) << e.what();
-    EXPECT_NE(std::string(e.message()).find(fragment), std::string::npos)
-        << "message: " << e.message() << "\nwanted: " << fragment;
-  }
+  test::expect_error(text, {line, column, key, fragment});
 }
 
 TEST(ReliefKeys, DefaultIsNone) {

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "studyfile_test_support.hpp"
+#include "support/input_error_expectations.hpp"
+#include "support/text_position.hpp"
 
 namespace rackopt::study {
 namespace {
@@ -18,37 +20,14 @@ using test::kStudies;
 using test::load;
 constexpr double kPi = 3.14159265358979323846;
 
-// "line:column" (1-based) of the first occurrence of `needle` in `text`, so
-// that expected marks come from the test text itself, not from the loader.
-std::string position_of(const std::string& text, const std::string& needle, std::size_t occurrence = 0) {
-  std::size_t at = text.find(needle);
-  for (std::size_t k = 0; k < occurrence && at != std::string::npos; ++k) at = text.find(needle, at + 1);
-  if (at == std::string::npos) return "<needle '" + needle + "' not in the text>";
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < at; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return std::to_string(line) + ":" + std::to_string(column);
-}
+using test_support::position_of;
 
 // Loads `text` expecting an InputError at file:line:column `where` whose key
-// path is `key` and whose message contains every one of `parts`.
+// path is `key` and whose text contains every one of `parts`.
 void expect_error(const std::string& text, const std::string& where, const std::string& key,
                   const std::vector<std::string>& parts, const std::vector<std::string>& overrides = {}) {
-  try {
-    (void)load(text, overrides);
-    ADD_FAILURE() << "no error; expected one at " << where << " for " << key;
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(to_string(e.mark()), where) << what;
-    EXPECT_EQ(e.key_path(), key) << what;
-    for (const auto& p : parts) EXPECT_NE(what.find(p), std::string::npos) << "missing '" << p << "' in: " << what;
-  }
+  test_support::expect_input_error([&] { (void)load(text, overrides); },
+                                   {.mark = where, .key = key, .in_what = parts});
 }
 
 std::string t(const std::string& where) { return "t.yaml:" + where; }

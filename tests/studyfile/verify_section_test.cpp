@@ -7,6 +7,8 @@
 
 #include "rackopt/studyfile/study_loader.hpp"
 #include "studyfile_test_support.hpp"
+#include "support/input_error_expectations.hpp"
+#include "support/text_position.hpp"
 
 namespace rackopt::study {
 namespace {
@@ -16,31 +18,11 @@ const std::string kEvaluateHead =
     "study: {kind: evaluate}\n"
     "problem: ../problems/gantry_axis.yaml\n";
 
-// "t.yaml:line:column" of the first `needle` in `text`.
-std::string mark_of(const std::string& text, const std::string& needle) {
-  const std::size_t at = text.find(needle);
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < at; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "t.yaml:" + std::to_string(line) + ":" + std::to_string(column);
-}
-
 void expect_error_at_needle(const std::string& text, const std::string& needle, const std::string& key,
                             const std::string& says) {
-  try {
-    (void)load(text);
-    ADD_FAILURE() << "no error for " << text;
-  } catch (const InputError& e) {
-    EXPECT_EQ(to_string(e.mark()), mark_of(text, needle)) << e.what();
-    EXPECT_EQ(e.key_path(), key) << e.what();
-    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-  }
+  test_support::expect_input_error([&] { (void)load(text); },
+                                   {.mark = "t.yaml:" + test_support::position_of(text, needle), .key = key,
+                                    .in_what = {says}});
 }
 
 TEST(VerifySection, AbsentMeansNoVerification) { EXPECT_FALSE(load(kEvaluateHead).verify_fe); }

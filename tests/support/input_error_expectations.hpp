@@ -18,6 +18,7 @@ struct ExpectedInputError {
   std::optional<std::string> file;
   std::optional<int> line;
   std::optional<int> column;
+  std::optional<std::string> mark;  // the whole "file:line:column" (to_string of the mark)
   std::optional<std::string> key;
   std::vector<std::string> in_message;  // each in message()
   std::vector<std::string> in_what;     // each in what(): "file:line:column: key: message"
@@ -33,6 +34,9 @@ inline void expect_input_error_matches(const InputError& e, const ExpectedInputE
   }
   if (want.column) {
     EXPECT_EQ(e.mark().column, *want.column) << what;
+  }
+  if (want.mark) {
+    EXPECT_EQ(to_string(e.mark()), *want.mark) << what;
   }
   if (want.key) {
     EXPECT_EQ(e.key_path(), *want.key) << what;
