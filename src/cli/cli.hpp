@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,8 @@ struct Args {
   std::vector<std::string> overrides;
   std::string out_dir;
   bool json = false;
-  long samples = -1;       // --samples N (wear): overrides reliability.samples
-  long seed = -1;          // --seed S (wear): overrides reliability.seed
+  std::optional<long> samples;  // --samples N (wear): overrides reliability.samples
+  std::optional<long> seed;     // --seed S (wear): overrides reliability.seed
   int threads = 0;         // --threads N (wear, run, fe): 0 = all cores
   bool resume = false;     // --resume (run): continue a study from its evaluation store
   bool progress = false;   // --progress (run): progress bar even when stderr is not a terminal

@@ -30,7 +30,7 @@ int cmd_wear(const Args& a) {
   opt.samples = a.samples;
   opt.seed = a.seed;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
-  const long n = a.samples > 0 ? a.samples : drive.reliability.samples;
+  const long n = a.samples.value_or(drive.reliability.samples);
   std::unique_ptr<ProgressBar> bar;
   if (!drive.reliability.inputs.empty()) {
     bar = std::make_unique<ProgressBar>(n, "samples");

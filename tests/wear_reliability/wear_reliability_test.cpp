@@ -51,7 +51,7 @@ TEST(WearReliability, ExactQuantileAgreesWithMonteCarlo) {
   EXPECT_GT(r.exact.failed_at_start, 0.0);
   EXPECT_GT(r.summary.immediate_failures, 0u);
   ASSERT_EQ(r.summary.reliability.size(), r.exact.R_at_times.size());
-  const double n = static_cast<double>(o.samples);
+  const double n = static_cast<double>(o.samples.value());
   for (std::size_t i = 0; i < r.exact.R_at_times.size(); ++i) {
     const double R = r.exact.R_at_times[i];
     const double tol = 3.0 * std::sqrt(std::max(R * (1 - R), 1.0 / n) / n) + 1.0 / n;

@@ -157,8 +157,8 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     dist.push_back(input_distribution(in, design_value(drive, in.key, model.nominal_contact_ratio())));
     out.input_keys.push_back(in.key);
   }
-  const std::size_t n = static_cast<std::size_t>(opt.samples > 0 ? opt.samples : spec.samples);
-  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed >= 0 ? opt.seed : static_cast<long>(spec.seed));
+  const std::size_t n = static_cast<std::size_t>(opt.samples.value_or(spec.samples));
+  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed.value_or(static_cast<long>(spec.seed)));
   const std::size_t dim = inputs.size();
   const statistics::PointSet points = spec.sobol ? statistics::sobol_points(n, dim, true, seed)
                                                   : statistics::pseudo_random_points(n, dim, seed);

@@ -35,8 +35,8 @@ namespace rackopt {
 class ProgressBar;
 
 struct WearReliabilityOptions {
-  long samples = -1;        // > 0 overrides reliability.samples
-  long seed = -1;           // >= 0 overrides reliability.seed
+  std::optional<long> samples;  // overrides reliability.samples (>= 1)
+  std::optional<long> seed;     // overrides reliability.seed (>= 0)
   unsigned threads = 0;     // 0 = hardware concurrency; results do not depend on it
   ProgressBar* progress = nullptr;  // ticked once per sample
   // Polled before each sample (Ctrl-C): once true the remaining samples are
