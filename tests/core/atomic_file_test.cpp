@@ -11,6 +11,7 @@
 #include <string>
 
 #include "rackopt/core/atomic_file.hpp"
+#include "rackopt/core/file_text.hpp"
 #include "support/file_text.hpp"
 #include "support/scratch_dir.hpp"
 
@@ -71,6 +72,22 @@ TEST(AtomicFile, EmptyContentAndAnUnwritableFolderAreRefused) {
   write_file_atomically(dir + "/blocker", "x\n");
   EXPECT_THROW(write_file_atomically(dir + "/blocker/inside.csv", "y\n"), std::runtime_error);
   EXPECT_EQ(files_in(dir), 1u);
+}
+
+}  // namespace
+}  // namespace rackopt
+
+namespace rackopt {
+namespace {
+
+// The writer's bytes come back whole, binary included; a missing file is
+// nullopt, not an empty text.
+TEST(FileText, ReadsBackWhatTheAtomicWriterWrote) {
+  const std::string dir = test_support::scratch_dir("file_text");
+  const std::string bytes = std::string("a\0b\r\n", 5) + std::string(100000, 'x');
+  write_file_atomically(dir + "/f.bin", bytes);
+  EXPECT_EQ(read_file_text(dir + "/f.bin"), bytes);
+  EXPECT_EQ(read_file_text(dir + "/missing"), std::nullopt);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "rackopt/fe/ccx_runner.hpp"
 
+#include "rackopt/core/file_text.hpp"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -20,12 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+// A file ccx did not write reads as empty: the caller reports what is missing.
+std::string read_text(const fs::path& p) { return read_file_text(p).value_or(""); }
 
 // ccx's own complaint: its "*ERROR" lines with the line after each (ccx
 // breaks its messages over two lines), at most 6 lines.
