@@ -147,9 +147,11 @@ struct StudySpec {
 };
 
 // A hex hash of everything that changes which designs are evaluated and their
-// results: kind, seed, variables, objectives, constraints, metric options,
+// results: kind, seed, variables, objectives, constraints, report metrics
+// (they are recorded with every evaluation), metric options,
 // solver/pareto/sweep settings and the problem file's content after the
-// overrides. Left out on purpose: the study name, output options and the
+// overrides. Left out on purpose: the study name, output options, the caps
+// sweep.max_points and max_discrete_combinations, and the
 // budget (max_evaluations, max_seconds), so that a study can be resumed with
 // a bigger budget. Used by the recorder to refuse resuming another study's
 // results into the same folder. Same inputs => same text.
