@@ -135,7 +135,7 @@ TEST(WearCli, ContactRatioSampledBelowOneFailsThoseSamplesOnly) {
 // Scatter that follows the design: 4 mm of clearance lowers the design's
 // contact ratio by 0.063 and the exact life at R = 0.9 with it (it stayed
 // 58.46 y when the contact ratio was an absolute N(1.44, 0.038));
-// tests/life/design_scatter_test.cpp checks the amount independently.
+// tests/wear_reliability/design_scatter_test.cpp checks the amount independently.
 TEST(WearCli, ClearanceMovesTheLifeAtR) {
   const CliResult a = run_cli("wear problems/ship_lift.yaml --json --samples 100 --out " + scratch_path("clear0"));
   const CliResult b = run_cli("wear problems/ship_lift.yaml --json --samples 100 --set mounting.clearance='4 mm' --out " +

@@ -218,7 +218,7 @@ TEST(EvaluateMetrics, WearLifeAtRAboveTheNominalLifeWarns) {
 // The metric follows the design: 4 mm of clearance lowers the shipped ship
 // lift's wear_life_at_R(0.9) with its nominal life, and it is the exact
 // quantile life run_wear_reliability reports for that design
-// (tests/life/design_scatter_test.cpp checks that life independently).
+// (tests/wear_reliability/design_scatter_test.cpp checks that life independently).
 TEST(EvaluateMetrics, WearLifeAtRFollowsTheClearance) {
   const Drive d0 = problem("ship_lift");
   const Drive d4 = load_problem(path("ship_lift"), {"mounting.clearance=4 mm"});

@@ -24,7 +24,7 @@ constexpr double kZ10 = -1.2815515655446004;  // Phi^-1(0.10)
 constexpr double kZ90 = 1.2815515655446004;   // Phi^-1(0.90)
 
 // Standard normal cdf and its inverse by bisection on it: independent of
-// reliability/distribution.cpp.
+// statistics/distribution.cpp.
 double phi_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 double phi_inverse(double p) {
   double lo = -10, hi = 10;

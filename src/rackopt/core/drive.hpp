@@ -255,7 +255,7 @@ struct Duty {
 // ratio of the drive's geometry and clearance; wear.coefficient:
 // wear.coefficient; load: load.force; surface_hardness: the rack's surface
 // hardness, else the pinion's), so that a design variable or `--set` that
-// changes v0 moves the whole distribution (life/design_scatter.hpp):
+// changes v0 moves the whole distribution (wear_reliability/design_scatter.hpp):
 //   normal:    X = v0 + a + N(0, sd), sd = b, or sd = cv v0 when cv > 0
 //              (a = shift [SI unit of the key], b = sd [same unit])
 //   lognormal: X = v0 F, F lognormal with median a (the median factor, 1 =

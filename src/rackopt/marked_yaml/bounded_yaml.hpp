@@ -1,7 +1,7 @@
 // The one way rackopt parses YAML text (problem files, study files, `--set`
 // values): yaml-cpp 0.7 loads, but only after a streaming pass has checked
 // that the text holds at most one document and stays inside the limits of
-// problem/input_limits.hpp once aliases are expanded. YAML::LoadAll is never
+// marked_yaml/input_limits.hpp once aliases are expanded. YAML::LoadAll is never
 // used: on a text that starts with ',' it returns empty documents forever.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Reading a problem or study file from disk, bounded: the text is what the
-// YAML loaders then parse (problem/bounded_yaml.hpp).
+// YAML loaders then parse (marked_yaml/bounded_yaml.hpp).
 #pragma once
 
 #include <string>

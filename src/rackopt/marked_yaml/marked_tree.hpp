@@ -40,7 +40,7 @@ struct MarkedEntry {
 
 // Parses YAML text into a MarkedNode. `file` is used in every mark.
 // Throws InputError (file:line:column) for everything load_one_yaml_document
-// refuses (problem/bounded_yaml.hpp: text over kMaxInputBytes, syntax errors,
+// refuses (marked_yaml/bounded_yaml.hpp: text over kMaxInputBytes, syntax errors,
 // more than kMaxTreeNodes nodes or kMaxExpandedTextBytes of text after alias
 // expansion, a stray ',', more than one document), nesting deeper than
 // kMaxTreeDepth, a key that is

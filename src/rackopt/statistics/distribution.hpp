@@ -86,7 +86,7 @@ class Distribution {
 
 // The distribution of RandomInput::a/b read as the absolute parameters of
 // the input (core/drive.hpp), whatever `absolute` says: an input around the
-// design goes through life/design_scatter.hpp's input_distribution, which
+// design goes through wear_reliability/design_scatter.hpp's input_distribution, which
 // calls this with the parameters made absolute. Invalid parameters throw
 // InputError with key "reliability.inputs.<key>".
 Distribution to_distribution(const RandomInput& input);

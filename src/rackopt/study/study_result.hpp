@@ -1,7 +1,7 @@
 // What a study run produces, as the report, the CLI and the tests read it:
 // one design (DesignResult), one discrete combination's outcome, the whole
 // StudyResult, and the progress the runner reports while it works. The run
-// itself is study_runner.hpp; presenting it is report/study_report.hpp.
+// itself is study_runner.hpp; presenting it is study_report/study_report.hpp.
 #pragma once
 
 #include <cstddef>

@@ -27,7 +27,7 @@ namespace rackopt::study_report {
 // "sweep_png", the wear roles of `rackopt wear` ("wear_profile_csv",
 // "life_samples_csv", "reliability_csv", "life_histogram_csv",
 // "wear_profile_png", "life_histogram_png", "reliability_png"), `verify: fe`'s
-// "fe_csv" and "fe_png" (report/fe_verification_report.hpp), and the
+// "fe_csv" and "fe_png" (study_report/fe_verification_report.hpp), and the
 // runner's "evaluations_csv" and "database". gnuplot scripts (*.gp) are
 // written next to each plot but not listed here.
 struct ReportFiles {

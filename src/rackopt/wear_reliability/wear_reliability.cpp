@@ -163,7 +163,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   const statistics::PointSet points = spec.sobol ? statistics::sobol_points(n, dim, true, seed)
                                                   : statistics::pseudo_random_points(n, dim, seed);
   out.input_values.assign(n, std::vector<double>(dim));
-  // Values outside their input's domain (life/sample_domain.hpp): the sample
+  // Values outside their input's domain (wear_reliability/sample_domain.hpp): the sample
   // is not evaluated but recorded as a failed evaluation with this reason.
   std::vector<std::string> outside(n);
   out.outside_domain_samples.assign(dim, 0);

@@ -8,7 +8,7 @@
 // A sampled contact ratio outside [max(1, [eps]), eps_max] fails at once with
 // life 0 and is counted in R(t); a sampled value outside its input's domain
 // (not finite, or <= 0 for a load, coefficient or hardness) is a failed
-// evaluation, excluded and counted (life/sample_domain.hpp). Neither is a
+// evaluation, excluded and counted (wear_reliability/sample_domain.hpp). Neither is a
 // crash, and neither gives the nominal life.
 //
 // Example:
@@ -48,7 +48,7 @@ struct WearReliabilityOptions {
   // the bootstrap alone takes twice the 100 ms budget of a life-at-R run.
   int bootstrap_replicates = 100;
   // One random input: the lives of the samples and the exact quantile map
-  // come from a verified table of life(input) (reliability/function_table.hpp)
+  // come from a verified table of life(input) (statistics/function_table.hpp)
   // instead of one model life per sample (docs/models/reliability.md, "Life
   // table"). false = one direct life per sample and R(t) by bisection.
   bool life_table = true;
@@ -115,7 +115,7 @@ struct WearReliabilityResult {
   std::vector<statistics::SampleResult> lives; // value = life [s]
   std::vector<std::string> criteria;            // failure criterion per sample ("" when failed to evaluate)
   // Per input: samples whose value lies outside the input's domain
-  // (life/sample_domain.hpp); those samples are failed evaluations.
+  // (wear_reliability/sample_domain.hpp); those samples are failed evaluations.
   std::vector<std::size_t> outside_domain_samples;
   // nullopt without random inputs (nothing sampled).
   std::optional<SamplingStatus> status;
@@ -128,7 +128,7 @@ struct WearReliabilityResult {
   unsigned threads_used = 1;
   std::uint64_t seed_used = 0;  // the Monte Carlo seed in effect (options.seed, else reliability.seed)
   long samples_used = 0;        // the sample count in effect
-  // A life at R >= 0.5 above the nominal life (life/life_at_R_check.hpp),
+  // A life at R >= 0.5 above the nominal life (wear_reliability/life_at_R_check.hpp),
   // one per R: from the exact quantile path when there is one, else from the
   // sampled summary (lower end of its interval) when more than one sample
   // was drawn.
