@@ -9,6 +9,11 @@
 
 namespace rackopt {
 
+unsigned resolve_threads(unsigned requested) {
+  if (requested > 0) return requested;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
 void parallel_for(std::size_t count, unsigned threads, const std::function<void(std::size_t)>& body,
                   const ParallelControl& control) {
   const std::size_t nthreads = std::max<std::size_t>(1, std::min<std::size_t>(threads == 0 ? 1 : threads, count));

@@ -6,6 +6,10 @@
 
 namespace rackopt {
 
+// The thread count a "threads" setting means: `requested` when > 0, else
+// every core the machine reports (at least 1).
+unsigned resolve_threads(unsigned requested);
+
 // What a caller may watch and steer while the jobs run (both may be empty).
 struct ParallelControl {
   // Polled before each job is handed out (from the worker threads: must be

@@ -208,7 +208,7 @@ FeComparison compare_with_fe(const Drive& drive, const FeComparisonOptions& opti
   std::vector<FePosition> positions(out.rows.size());
   std::vector<ToothComplianceFe> teeth(jobs.size());
   auto stopped = [&] { return options.stop && options.stop(); };
-  unsigned threads = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = resolve_threads(options.threads);
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, jobs.size()));
   out.threads = std::max(1u, threads);
   ParallelControl control;

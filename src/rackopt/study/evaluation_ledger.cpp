@@ -1,10 +1,11 @@
 #include "rackopt/study/evaluation_ledger.hpp"
 
+#include "rackopt/core/parallel_for.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <thread>
 
 namespace rackopt::study {
 
@@ -13,12 +14,6 @@ namespace {
 // Shown once each; a sweep over a region with undercut would otherwise list
 // one warning per design.
 constexpr std::size_t kMaxWarnings = 20;
-
-unsigned resolve_threads(unsigned requested) {
-  if (requested > 0) return requested;
-  const unsigned hw = std::thread::hardware_concurrency();
-  return hw > 0 ? hw : 1;
-}
 
 }  // namespace
 

@@ -11,6 +11,7 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/parallel_for.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/wear_reliability/design_scatter.hpp"
 #include "rackopt/wear_reliability/life_at_R_check.hpp"
@@ -180,7 +181,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       }
     }
   }
-  unsigned threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  unsigned threads = resolve_threads(opt.threads);
   threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
   out.threads_used = threads;
   out.seed_used = seed;
