@@ -89,7 +89,8 @@ void expect_store_complete(const std::string& study_file, const std::string& out
   std::vector<std::string> names;
   for (const auto& v : spec.variables) names.push_back(v.key);
   auto store = rackopt::record::EvaluationStore::open(out_dir + "/evaluations.sqlite",
-                                                      rackopt::study::study_fingerprint(spec), names, true);
+                                                      rackopt::study::study_fingerprint(spec), names, true,
+                                                      {.fingerprint_format = rackopt::study::kStudyFingerprintFormat});
   const auto all = store.all();
   EXPECT_EQ(all.size(), kSweepSize);
   std::set<std::vector<double>> xs;

@@ -45,7 +45,8 @@ RunOptions options_in(const std::string& dir, unsigned threads = 1) {
 
 std::vector<record::RecordedEvaluation> rows_of(const StudyResult& r, const StudySpec& spec) {
   StudyProblem p(spec);
-  auto store = record::EvaluationStore::open(r.database_path, study_fingerprint(spec), p.variable_keys(), true);
+  auto store = record::EvaluationStore::open(r.database_path, study_fingerprint(spec), p.variable_keys(), true,
+                                             {.fingerprint_format = kStudyFingerprintFormat});
   return store.all();
 }
 

@@ -212,14 +212,49 @@ TEST(StudyLoader, SolverSettings) {
   EXPECT_EQ(s.solver.starts, 3);
   EXPECT_DOUBLE_EQ(s.solver.xtol_rel, 1e-4);
   EXPECT_DOUBLE_EQ(s.solver.gradient_step, 1e-5);
-  EXPECT_DOUBLE_EQ(s.solver.ipopt_tol, 1e-7);
-  EXPECT_EQ(s.solver.ipopt_max_iterations, 100);
+  EXPECT_DOUBLE_EQ(s.solver.options.at("ipopt_tol"), 1e-7);
+  EXPECT_EQ(s.solver.options.at("ipopt_max_iterations"), 100);
 
   EXPECT_FALSE(load(kOptimize + "solver: {library: nlopt, algorithm: LD_SLSQP}\n").solver.central_differences);
   EXPECT_FALSE(load(kOptimize + "solver: {library: ipopt, gradients: forward}\n").solver.central_differences);
   EXPECT_TRUE(load(kOptimize + "solver: {algorithm: LD_MMA, gradients: central}\n").solver.central_differences);
   // A bare max_time is seconds (not the time kind's default years).
   EXPECT_DOUBLE_EQ(load(kOptimize + "solver: {max_time: 30}\n").solver.max_seconds, 30.0);
+}
+
+TEST(StudyLoader, EachLibraryReadsItsOwnSettings) {
+  const StudySpec s = load(kOptimize + "solver: {library: pagmo, algorithm: SADE, population: 30, max_evaluations: 600}\n");
+  EXPECT_EQ(s.solver.library, "pagmo");
+  EXPECT_EQ(s.solver.options.at("population"), 30);
+  EXPECT_EQ(s.solver.options.count("stall_generations"), 0u);  // left out: the library's default
+  // Without an algorithm a library takes its own default.
+  EXPECT_EQ(load(kOptimize + "solver: {library: pagmo, algorithm: cmaes}\n").solver.algorithm, "cmaes");
+
+  const std::string other = kOptimize + "solver: {library: nlopt, population: 30}\n";
+  expect_error(other, t(position_of(other, "population")), "solver.population",
+               {"setting of library pagmo, not of nlopt", "no settings of its own"});
+  const std::string range = kOptimize + "solver: {library: pagmo, algorithm: sade, population: -4}\n";
+  expect_error(range, t(position_of(range, "-4")), "solver.population", {"out of range"});
+  // What only the algorithm can judge is reported at the setting it concerns.
+  const std::string multiple = kOptimize + "solver: {library: pagmo, algorithm: cmaes, population: 3}\n";
+  expect_error(multiple, t(position_of(multiple, "3}")), "solver.population", {"at least 5"});
+}
+
+TEST(StudyLoader, ParetoMethodFollowsTheSolversFrontAlgorithm) {
+  const std::string pareto = "study: {kind: pareto}\n"
+                             "problem: ../problems/rack_railway.yaml\n"
+                             "variables:\n"
+                             "  pinion.pressure_angle: {lower: 17 deg, upper: 25 deg, start: 20 deg}\n"
+                             "objectives: [stiffness_fluctuation, supports_per_metre]\n";
+  EXPECT_EQ(load(pareto + "solver: {library: pagmo, algorithm: nsga2, max_evaluations: 2000}\n").pareto.method,
+            solvers::Scalarization::kPopulation);
+  EXPECT_EQ(load(pareto).pareto.method, solvers::Scalarization::kEpsilonConstraint);
+  const std::string mismatch = pareto + "pareto: {method: population}\nsolver: {algorithm: LN_COBYLA}\n";
+  expect_error(mismatch, t(position_of(mismatch, "population}")), "pareto.method", {"finds whole fronts", "eps_constraint"});
+  const std::string eps = pareto + "pareto: {method: eps_constraint}\nsolver: {library: pagmo, algorithm: moead}\n";
+  expect_error(eps, t(position_of(eps, "eps_constraint}")), "pareto.method", {"finds whole Pareto fronts"});
+  const std::string optimize = kOptimize + "solver: {library: pagmo, algorithm: nsga2}\n";
+  expect_error(optimize, t(position_of(optimize, "nsga2")), "solver.algorithm", {"one-objective algorithm"});
 }
 
 TEST(StudyLoader, SeedDrivesEveryRandomChoice) {

@@ -1,13 +1,16 @@
-// Internal to the solver adapters: one start of NLopt or Ipopt on an
-// EvaluationTracker, and the NLopt algorithm table the settings check uses.
+// Internal to the solver backends: the multistart loop NLopt and Ipopt share,
+// one start of each on an EvaluationTracker, and the NLopt algorithm table.
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "rackopt/solvers/evaluation_tracker.hpp"
 #include "rackopt/solvers/solver.hpp"
+#include "rackopt/solvers/solver_backend.hpp"
 #include "rackopt/solvers/solver_status.hpp"
 
 namespace rackopt::solvers::detail {
@@ -49,5 +52,19 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
                              std::vector<double> x_start, int start);
 StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& settings,
                              std::vector<double> x_start, int start);
+
+// One start of a local solver from x_start (start 0 is x0).
+using StartRunner = std::function<StartOutcome(EvaluationTracker& tracker, std::vector<double> x_start, int start)>;
+
+// x0 (clamped into the box) and then settings.starts - 1 Latin hypercube
+// points of the box, all on one tracker and budget; the result's status says
+// how the whole run ended (the contract of solvers::minimize).
+SolverResult run_multistart(const Problem& problem, std::span<const double> x0, const SolverSettings& settings,
+                            const SolverCallbacks& callbacks, const StartRunner& run_start);
+
+// The backends solver_backends() lists.
+const SolverBackend& nlopt_backend();
+const SolverBackend& ipopt_backend();
+const SolverBackend& pagmo_backend();
 
 }  // namespace rackopt::solvers::detail

@@ -65,6 +65,9 @@ class EvaluationTracker {
   std::size_t num_equality() const { return ne_; }
   const std::vector<double>& lower() const { return lower_; }
   const std::vector<double>& upper() const { return upper_; }
+  const std::vector<double>& x0() const { return x0_; }
+  // Model evaluations made so far in the whole run (memo hits not counted).
+  std::size_t evaluations_so_far() const { return evaluations_; }
 
   // Multistart number written into the observer records from now on.
   void begin_start(int start);

@@ -1,5 +1,7 @@
 #include "rackopt/solvers/pareto.hpp"
 
+#include "rackopt/solvers/solver_backend.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -205,6 +207,25 @@ std::vector<SubProblemSpec> grid(const ParetoSettings& s, std::size_t m, const s
 ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, const ParetoSettings& settings,
                           const ParetoCallbacks& callbacks) {
   const std::size_t m = problem.num_objectives();
+  if (settings.method == Scalarization::kPopulation) {
+    const SolverBackend* backend = find_solver_backend(settings.solver.library);
+    if (!backend || !backend->finds_fronts(settings.solver))
+      throw std::invalid_argument("pareto_front: the population method needs an algorithm that finds fronts "
+                                  "(pagmo's nsga2 or moead); '" + settings.solver.library + " " +
+                                  settings.solver.algorithm + "' minimizes one objective: use eps_constraint or "
+                                  "weighted_sum with it");
+    if (settings.points < 2)
+      throw std::invalid_argument("pareto_front needs points >= 2, got " + std::to_string(settings.points));
+    if (!(settings.duplicate_tolerance >= 0.0) || !std::isfinite(settings.duplicate_tolerance))
+      throw std::invalid_argument("pareto_front: duplicate_tolerance must be finite and >= 0");
+    if (std::string msg = check_solver_settings(settings.solver, problem, x0); !msg.empty())
+      throw std::invalid_argument("pareto_front: " + msg);
+    return backend->front(problem, x0, settings, callbacks);
+  }
+  if (algorithm_finds_fronts(settings.solver))
+    throw std::invalid_argument("pareto_front: " + settings.solver.algorithm +
+                                " finds whole fronts; use it with the population method, or give the "
+                                "scalarized sub-problems a single-objective algorithm");
   if (m != 2 && m != 3)
     throw std::invalid_argument("pareto_front needs 2 or 3 objectives; the problem has " + std::to_string(m));
   if (settings.points < 2)
@@ -366,6 +387,15 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
   else
     result.status = ParetoStatus::kOk;
   return result;
+}
+
+std::string_view method_title(Scalarization method) {
+  switch (method) {
+    case Scalarization::kEpsilonConstraint: return "eps-constraint";
+    case Scalarization::kWeightedSum: return "weighted sum";
+    case Scalarization::kPopulation: return "population search";
+  }
+  return "?";
 }
 
 std::string_view to_string(ParetoStatus status) {

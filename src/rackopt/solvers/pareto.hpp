@@ -25,7 +25,13 @@ namespace rackopt::solvers {
 // kWeightedSum: minimize sum_i w_i (f_i - ideal_i) / (nadir_i - ideal_i);
 //   works with any algorithm but only finds the convex hull of the front:
 //   points on a concave part are never the minimum of a weighted sum.
-enum class Scalarization { kEpsilonConstraint, kWeightedSum };
+// kPopulation: no scalarization: the solver's own front algorithm (pagmo's
+//   nsga2 or moead) searches the whole front in one run of 2-4 objectives,
+//   and front_selection.hpp keeps `points` of its feasible evaluations.
+enum class Scalarization { kEpsilonConstraint, kWeightedSum, kPopulation };
+
+// "eps-constraint", "weighted sum", "population search" (for reports).
+std::string_view method_title(Scalarization method);
 
 struct ParetoSettings {
   Scalarization method = Scalarization::kEpsilonConstraint;
@@ -73,8 +79,11 @@ struct ParetoResult {
   std::vector<ParetoPoint> infeasible;
   // From the feasible anchors: ideal_i = min f_i, nadir_i = max f_i over them.
   std::vector<double> ideal, nadir;
-  // Sums over every sub-solve; `subproblems` counts the anchors too.
+  // Sums over every sub-solve; `subproblems` counts the anchors too (a
+  // population method's run is one).
   std::size_t evaluations = 0, failed_evaluations = 0, subproblems = 0;
+  // Population methods: generations after the first population, and its size.
+  std::size_t generations = 0, population = 0;
   ParetoStatus status = ParetoStatus::kOk;
 };
 
@@ -87,7 +96,8 @@ struct ParetoCallbacks {
   StopRequest stop;  // forwarded to every sub-solve; once it fires no further sub-problem starts
 };
 
-// Approximates the Pareto front of `problem` (num_objectives() 2 or 3).
+// Approximates the Pareto front of `problem` (num_objectives() 2 or 3; 2 to
+// 4 for kPopulation, which hands the whole search to the solver's backend).
 // Anchors first (minimize each objective alone from x0, constraints kept),
 // then the scalarized sub-problems of `settings.method` on a grid between
 // ideal and nadir, each warm-started from the previous sub-problem's

@@ -1,5 +1,7 @@
 // One entry point for every single-objective optimizer the toolkit uses:
-// NLopt 2.7 algorithms and Ipopt 3.11 behind the same settings and result.
+// NLopt 2.7 algorithms, Ipopt 3.11 and pagmo 2.18's population methods behind
+// the same settings and result (each library is a SolverBackend,
+// solver_backend.hpp).
 //
 // The adapters never trust a solver's own answer: they evaluate the Problem
 // themselves (once per distinct x), keep the best feasible point seen over
@@ -10,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -21,8 +24,12 @@
 namespace rackopt::solvers {
 
 struct SolverSettings {
-  std::string library = "nlopt";        // "nlopt" | "ipopt" (case-insensitive)
-  std::string algorithm = "LN_COBYLA";  // NLopt name, NLOPT_ prefix optional, case-insensitive; ignored for ipopt
+  // A library of solver_backends() (solver_backend.hpp): "nlopt", "ipopt" or
+  // "pagmo", any case.
+  std::string library = "nlopt";
+  // One of the library's algorithms (any case; NLopt's take an optional
+  // NLOPT_ prefix); ignored by Ipopt, which has one method.
+  std::string algorithm = "LN_COBYLA";
   // Sub-solver of the AUGLAG and MLSL variants (AUGLAG, AUGLAG_EQ, G_MLSL,
   // G_MLSL_LDS, LN_/LD_AUGLAG(_EQ), GN_/GD_MLSL(_LDS)); empty = LD_MMA for the
   // LD_/GD_ ones, LN_COBYLA for the others. The adapter always sets one:
@@ -55,9 +62,10 @@ struct SolverSettings {
   // bias; use them with Ipopt and whenever the optimum must be accurate to
   // better than ~1e-3 (docs/solvers.md, "Finite differences").
   bool central_differences = false;
-  double ipopt_tol = 1e-8;
-  int ipopt_max_iterations = 3000;
-  int ipopt_print_level = 0;
+  // The library's own settings by key (SolverBackend::options() declares
+  // each with its default and range, e.g. Ipopt's "ipopt_tol" or pagmo's
+  // "population"); a key left out takes the default.
+  std::map<std::string, double> options;
 };
 
 struct SolverCallbacks {
@@ -103,11 +111,13 @@ enum class SolverSetting {
   kAlgorithm,       // the NLopt algorithm, or what it cannot do with this shape
   kLocalAlgorithm,  // the sub-solver of AUGLAG/MLSL
   kNumbers,         // a budget or tolerance out of range
+  kOption,          // one of the library's own settings (SolverSettingsRefusal::option names it)
   kProblem,         // the shape itself (no variables, not one objective)
 };
 struct SolverSettingsRefusal {
   SolverSetting setting;
   std::string message;  // what is wrong AND what to use instead
+  std::string option;   // kOption: the key in SolverSettings::options
 };
 
 // Whether `settings` can run a problem of `shape`: nullopt when they can;
@@ -135,5 +145,8 @@ SolverResult minimize(const Problem& problem, std::span<const double> x0, const 
 
 // The NLopt algorithm names accepted (without the NLOPT_ prefix).
 std::vector<std::string> nlopt_algorithm_names();
+
+// The front-finding algorithm names of every library ("nsga2", "moead").
+bool algorithm_finds_fronts(const SolverSettings& settings);
 
 }  // namespace rackopt::solvers

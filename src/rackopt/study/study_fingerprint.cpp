@@ -12,6 +12,8 @@
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/study_spec.hpp"
 
+#include "rackopt/solvers/solver_backend.hpp"
+
 namespace rackopt::study {
 
 namespace {
@@ -140,17 +142,24 @@ std::string study_fingerprint(const StudySpec& spec) {
 
   auto solver = [&](const solvers::SolverSettings& s) {
     // max_evaluations and max_seconds left out: a study may be resumed with a
-    // bigger budget. ipopt_print_level only changes console output.
+    // bigger budget. The library's own settings follow, each with its value
+    // or default (so spelling a default out changes nothing); settings that
+    // only change console output stay out.
     c.str(s.library);
     c.str(s.algorithm);
     c.str(s.local_algorithm);
-    for (double v : {s.xtol_rel, s.xtol_abs, s.ftol_rel, s.ftol_abs, s.constraint_tolerance, s.gradient_step,
-                     s.ipopt_tol})
+    for (double v : {s.xtol_rel, s.xtol_abs, s.ftol_rel, s.ftol_abs, s.constraint_tolerance, s.gradient_step})
       c.num(v);
     c.integer(static_cast<std::uint64_t>(s.starts));
     c.integer(s.seed);
     c.integer(s.central_differences ? 1 : 0);
-    c.integer(static_cast<std::uint64_t>(s.ipopt_max_iterations));
+    if (const solvers::SolverBackend* backend = solvers::find_solver_backend(s.library)) {
+      for (const solvers::BackendOption& o : backend->options()) {
+        if (o.output_only) continue;
+        c.key(o.key.c_str());
+        c.num(backend->option(s, o.key));
+      }
+    }
   };
   c.key("solver");
   solver(spec.solver);

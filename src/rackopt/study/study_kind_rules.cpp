@@ -20,9 +20,15 @@ std::optional<StudyRuleViolation> objective_count(const StudySpec& spec) {
                      "an optimize study needs exactly one objective, found " + std::to_string(n) +
                          (n > 1 ? " (for 2 or 3 objectives use kind: pareto; or turn the others into constraints)"
                                 : " (e.g. objectives: [stiffness_fluctuation])"));
-  if (spec.kind == StudyKind::kPareto && (n < 2 || n > 3))
-    return violation(StudyRulePart::kObjectives, "a pareto study needs 2 or 3 objectives, found " + std::to_string(n) +
-                                                     (n < 2 ? " (for one objective use kind: optimize)" : ""));
+  const bool population = spec.pareto.method == solvers::Scalarization::kPopulation;
+  const std::size_t most = population ? 4 : 3;
+  if (spec.kind == StudyKind::kPareto && (n < 2 || n > most))
+    return violation(StudyRulePart::kObjectives,
+                     "a pareto study needs 2 " + std::string(population ? "to 4" : "or 3") + " objectives, found " + std::to_string(n) +
+                         (n < 2 ? " (for one objective use kind: optimize)"
+                                : population ? ""
+                                             : " (4 objectives: pareto method population with solver library "
+                                               "pagmo, algorithm nsga2 or moead)"));
   return std::nullopt;
 }
 
@@ -97,6 +103,7 @@ StudyRulePart part_of(solvers::SolverSetting s, const solvers::SolverSettings& s
   switch (s) {
     case solvers::SolverSetting::kLibrary: return StudyRulePart::kSolverLibrary;
     case solvers::SolverSetting::kLocalAlgorithm: return StudyRulePart::kSolverLocalAlgorithm;
+    case solvers::SolverSetting::kOption: return StudyRulePart::kSolverOption;
     case solvers::SolverSetting::kAlgorithm:
     case solvers::SolverSetting::kNumbers:
     case solvers::SolverSetting::kProblem: break;
@@ -110,9 +117,28 @@ std::optional<StudyRuleViolation> solver_can_run(const StudySpec& spec) {
   const solvers::ProblemShape shape = solver_problem_shape(spec);
   // Every variable discrete: the enumeration is the optimization, no solver runs.
   if (shape.dimension == 0) return std::nullopt;
-  if (auto r = solvers::check_solver_settings(spec.solver, shape))
-    return violation(part_of(r->setting, spec.solver), r->message);
-  if (spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kEpsilonConstraint) {
+  const bool pareto = spec.kind == StudyKind::kPareto;
+  const bool population = pareto && spec.pareto.method == solvers::Scalarization::kPopulation;
+  const bool finds_fronts = solvers::algorithm_finds_fronts(spec.solver);
+  if (population && !finds_fronts)
+    return violation(StudyRulePart::kParetoMethod,
+                     "the population method needs a solver that finds whole fronts (library pagmo, algorithm nsga2 "
+                     "or moead); " + spec.solver.library + " " + spec.solver.algorithm +
+                         " minimizes one objective: use eps_constraint or weighted_sum with it");
+  if (finds_fronts && !population)
+    return violation(pareto ? StudyRulePart::kParetoMethod : StudyRulePart::kSolverAlgorithm,
+                     spec.solver.algorithm + " finds whole Pareto fronts: " +
+                         (pareto ? std::string("use it with pareto method: population (or leave method out), or give "
+                                               "the scalarized sub-problems a one-objective algorithm (pagmo cmaes or "
+                                               "sade, an NLopt algorithm, Ipopt)")
+                                 : std::string("an optimize study needs a one-objective algorithm (pagmo cmaes or "
+                                               "sade, an NLopt algorithm, Ipopt), or kind: pareto")));
+  if (auto r = solvers::check_solver_settings(spec.solver, shape)) {
+    auto v = violation(part_of(r->setting, spec.solver), r->message);
+    v->option = r->option;
+    return v;
+  }
+  if (pareto && spec.pareto.method == solvers::Scalarization::kEpsilonConstraint) {
     const std::size_t bounds = spec.objectives.size() - 1;
     solvers::ProblemShape eps = shape;
     eps.inequality += bounds;
@@ -137,6 +163,7 @@ std::string to_string(StudyRulePart part) {
     case StudyRulePart::kSolverLibrary: return "solver library";
     case StudyRulePart::kSolverAlgorithm: return "solver algorithm";
     case StudyRulePart::kSolverLocalAlgorithm: return "solver local algorithm";
+    case StudyRulePart::kSolverOption: return "solver setting";
     case StudyRulePart::kParetoMethod: return "pareto method";
   }
   return "?";
@@ -154,6 +181,7 @@ std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec&
     case StudyRulePart::kSolverLibrary: return "solver.library";
     case StudyRulePart::kSolverAlgorithm: return "solver.algorithm";
     case StudyRulePart::kSolverLocalAlgorithm: return "solver.local_algorithm";
+    case StudyRulePart::kSolverOption: return "solver." + violation.option;
     case StudyRulePart::kParetoMethod: return "pareto.method";
   }
   return "study";
@@ -161,6 +189,8 @@ std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec&
 
 solvers::ProblemShape solver_problem_shape(const StudySpec& spec) {
   solvers::ProblemShape shape;
+  if (spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kPopulation)
+    shape.objectives = spec.objectives.size();
   for (const auto& v : spec.variables)
     if (!v.discrete()) ++shape.dimension;
   for (const auto& c : spec.constraints) {

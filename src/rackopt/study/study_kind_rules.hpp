@@ -28,6 +28,7 @@ enum class StudyRulePart {
   kSolverLibrary,       // solver.library, or what it cannot do with the study's shape
   kSolverAlgorithm,     // solver.algorithm (also the budget and tolerances)
   kSolverLocalAlgorithm,
+  kSolverOption,        // one of the library's own settings (StudyRuleViolation::option names it)
   kParetoMethod,        // pareto.method: eps_constraint adds constraints the solver cannot take
 };
 std::string to_string(StudyRulePart part);
@@ -36,10 +37,12 @@ struct StudyRuleViolation {
   StudyRulePart part;
   std::size_t variable = 0;  // index into spec.variables when part == kVariable
   std::string message;       // what is wrong and what to do instead
+  std::string option;        // the solver setting's key when part == kSolverOption
 };
 
 // The first broken rule, in the order a user should fix them, or nullopt:
-//  * optimize: exactly one objective; pareto: 2 or 3;
+//  * optimize: exactly one objective; pareto: 2 or 3 (2 to 4 with the
+//    population method);
 //  * optimize, pareto and sweep: at least one variable;
 //  * evaluate and reliability: every variable has a start (one design);
 //  * sweep: the grid or the sample within sweep.max_points;
@@ -54,8 +57,8 @@ std::optional<StudyRuleViolation> check_study_kind_rules(const StudySpec& spec);
 // StudySpec that has no file positions.
 std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec& spec);
 
-// The shape of the single-objective problems the solver sees in an optimize
-// or pareto study: continuous variables, and inequality/equality counts of
+// The shape of the problems the solver sees in an optimize or pareto study
+// (one objective, or the pareto study's objectives for the population method): continuous variables, and inequality/equality counts of
 // the constraints (a constraint with min and max is two inequalities).
 solvers::ProblemShape solver_problem_shape(const StudySpec& spec);
 

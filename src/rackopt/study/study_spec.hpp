@@ -158,10 +158,12 @@ struct StudySpec {
 std::string study_fingerprint(const StudySpec& spec);
 
 // The format of study_fingerprint, stored beside it in the evaluation store:
-// "1" is FNV-1a 64 with the historical basis (core/fnv1a.hpp,
-// kStudyFingerprintBasis) over the canonical text of study_fingerprint.cpp.
+// "2" is FNV-1a 64 with the historical basis (core/fnv1a.hpp,
+// kStudyFingerprintBasis) over the canonical text of study_fingerprint.cpp
+// with each solver library's own settings by key ("1" wrote Ipopt's two
+// settings among the common numbers).
 // Change it with any change to either, so that a store of the old format is
 // refused by name instead of being compared with a fingerprint it cannot match.
-inline constexpr const char* kStudyFingerprintFormat = "1";
+inline constexpr const char* kStudyFingerprintFormat = "2";
 
 }  // namespace rackopt::study

@@ -1,5 +1,7 @@
 #include "rackopt/study_report/report_markdown.hpp"
 
+#include "rackopt/solvers/solver_backend.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -72,16 +74,17 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   o << "- seed: " << spec.seed << "\n";
   if (spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto) {
     o << "- solver: " << spec.solver.library;
-    if (spec.solver.library != "ipopt") o << " " << spec.solver.algorithm;
+    const solvers::SolverBackend* backend = solvers::find_solver_backend(spec.solver.library);
+    if (backend && !backend->algorithms().empty()) o << " " << spec.solver.algorithm;
+    for (const auto& [key, value] : spec.solver.options) o << ", " << key << " " << format_number(value, 6);
     if (!spec.solver.local_algorithm.empty()) o << " (local " << spec.solver.local_algorithm << ")";
     o << ", at most " << spec.solver.max_evaluations << " evaluations";
     if (spec.solver.starts > 1) o << ", " << spec.solver.starts << " starts";
     o << "\n";
   }
   if (spec.kind == StudyKind::kPareto) {
-    o << "- front: "
-      << (spec.pareto.method == solvers::Scalarization::kEpsilonConstraint ? "eps-constraint" : "weighted sum")
-      << ", " << spec.pareto.points << " points requested\n";
+    o << "- front: " << solvers::method_title(spec.pareto.method) << ", " << spec.pareto.points
+      << " points requested\n";
   }
   if (spec.kind == StudyKind::kSweep) {
     const char* m = spec.sweep.method == SweepSpec::Method::kGrid             ? "grid"

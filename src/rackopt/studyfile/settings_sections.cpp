@@ -6,6 +6,7 @@
 
 #include "rackopt/core/text.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/solvers/solver_backend.hpp"
 #include "rackopt/studyfile/study_section_reader.hpp"
 
 namespace rackopt::studyfile {
@@ -13,16 +14,51 @@ namespace rackopt::studyfile {
 using namespace rackopt::study;
 namespace {
 
+// The keys every library shares; each library's own keys come from its
+// SolverBackend::options().
+const std::vector<std::string>& common_solver_keys() {
+  static const std::vector<std::string> keys = {
+      "library",  "algorithm", "local_algorithm", "max_evaluations", "max_time",      "starts",
+      "xtol_rel", "xtol_abs",  "ftol_rel",        "ftol_abs",        "constraint_tolerance", "gradients",
+      "gradient_step"};
+  return keys;
+}
+
+// A library's own settings: keys of another library are refused by name.
+void read_backend_options(const SectionReader& sv, const solvers::SolverBackend& backend,
+                          solvers::SolverSettings& so) {
+  for (const solvers::SolverBackend* other : solvers::solver_backends()) {
+    for (const solvers::BackendOption& o : other->options()) {
+      if (!sv.get(o.key)) continue;
+      if (other != &backend) {
+        std::vector<std::string> own;
+        for (const solvers::BackendOption& mine : backend.options()) own.push_back(mine.key);
+        throw InputError(sv.key_mark(o.key), "solver." + o.key,
+                         "is a setting of library " + std::string(other->library()) + ", not of " +
+                             std::string(backend.library()) + "; " +
+                             (own.empty() ? std::string(backend.library()) + " has no settings of its own"
+                                          : std::string(backend.library()) + "'s own settings: " + join(own)));
+      }
+      const ValueRange range{.lo = o.lo, .hi = o.hi, .lo_open = o.lo_open};
+      if (o.whole) {
+        if (const auto v = sv.integer(o.key, range)) so.options[o.key] = static_cast<double>(*v);
+      } else if (const auto v = sv.plain_number(o.key, range)) {
+        so.options[o.key] = *v;
+      }
+    }
+  }
+}
+
 SectionReader read_solver(const SectionReader& top, StudySpec& spec) {
-  const SectionReader sv =
-      study_section(top.get("solver"), "solver", top.key_mark("solver"),
-                    {"library", "algorithm", "local_algorithm", "max_evaluations", "max_time", "starts", "xtol_rel",
-                     "xtol_abs", "ftol_rel", "ftol_abs", "constraint_tolerance", "gradients", "gradient_step",
-                     "ipopt_tol", "ipopt_max_iterations"},
-                    "{library: nlopt, algorithm: LN_COBYLA, max_evaluations: 400}");
+  std::vector<std::string> keys = common_solver_keys();
+  for (const solvers::SolverBackend* b : solvers::solver_backends())
+    for (const solvers::BackendOption& o : b->options()) keys.push_back(o.key);
+  const SectionReader sv = study_section(top.get("solver"), "solver", top.key_mark("solver"), keys,
+                                         "{library: nlopt, algorithm: LN_COBYLA, max_evaluations: 400}");
   solvers::SolverSettings& so = spec.solver;
-  so.library = sv.choice("library", {"nlopt", "ipopt"}).value_or("nlopt");
-  so.algorithm = sv.text("algorithm", so.algorithm);
+  so.library = sv.choice("library", solvers::solver_library_names()).value_or("nlopt");
+  const solvers::SolverBackend& backend = *solvers::find_solver_backend(so.library);
+  so.algorithm = sv.text("algorithm", backend.default_algorithm());
   so.local_algorithm = sv.text("local_algorithm", "");
   so.max_evaluations = static_cast<std::size_t>(sv.integer("max_evaluations", {1, 100000000}).value_or(1000));
   so.max_seconds =
@@ -35,12 +71,11 @@ SectionReader read_solver(const SectionReader& top, StudySpec& spec) {
   so.ftol_abs = sv.plain_number("ftol_abs", {.lo = 0}).value_or(so.ftol_abs);
   so.constraint_tolerance = sv.plain_number("constraint_tolerance", {.lo = 0}).value_or(so.constraint_tolerance);
   const auto gradients = sv.choice("gradients", {"forward", "central"});
+  // Ipopt's steps are sensitive to the O(h) bias of forward differences.
   so.central_differences = gradients ? *gradients == "central" : so.library == "ipopt";
   so.gradient_step =
       sv.plain_number("gradient_step", {.lo = 0, .hi = 0.25, .lo_open = true}).value_or(so.gradient_step);
-  so.ipopt_tol = sv.plain_number("ipopt_tol", {.lo = 0, .lo_open = true}).value_or(so.ipopt_tol);
-  so.ipopt_max_iterations =
-      static_cast<int>(sv.integer("ipopt_max_iterations", {1, 100000000}).value_or(so.ipopt_max_iterations));
+  read_backend_options(sv, backend, so);
   so.seed = spec.seed;
   return sv;
 }
@@ -50,10 +85,14 @@ SectionReader read_pareto(const SectionReader& top, StudySpec& spec) {
   const SectionReader pa = study_section(top.get("pareto"), "pareto", top.key_mark("pareto"),
                                          {"method", "points", "primary", "duplicate_tolerance", "choose_weights"},
                                          "{method: eps_constraint, points: 20}");
-  spec.pareto.method =
-      pa.choice("method", {"eps_constraint", "weighted_sum"}).value_or("eps_constraint") == "weighted_sum"
-          ? solvers::Scalarization::kWeightedSum
-          : solvers::Scalarization::kEpsilonConstraint;
+  // Without a method: the solver's own front search when its algorithm has
+  // one (pagmo's nsga2, moead), else the eps-constraint scalarization.
+  const std::string method =
+      pa.choice("method", {"eps_constraint", "weighted_sum", "population"})
+          .value_or(solvers::algorithm_finds_fronts(spec.solver) ? "population" : "eps_constraint");
+  spec.pareto.method = method == "weighted_sum" ? solvers::Scalarization::kWeightedSum
+                       : method == "population" ? solvers::Scalarization::kPopulation
+                                                : solvers::Scalarization::kEpsilonConstraint;
   spec.pareto.points = static_cast<std::size_t>(pa.integer("points", {2, 10000}).value_or(20));
   spec.pareto.duplicate_tolerance =
       pa.plain_number("duplicate_tolerance", {.lo = 0, .hi = 1}).value_or(spec.pareto.duplicate_tolerance);

@@ -114,6 +114,9 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
         if (sv.has("local_algorithm")) return {sv.value_mark("local_algorithm"), "solver.local_algorithm"};
         return value_or_section(sv, "algorithm", "solver.algorithm");
       case StudyRulePart::kSolverAlgorithm: return value_or_section(sv, "algorithm", "solver.algorithm");
+      case StudyRulePart::kSolverOption:
+        if (sv.has(v.option)) return {sv.value_mark(v.option), "solver." + v.option};
+        return value_or_section(sv, "algorithm", "solver.algorithm");
       case StudyRulePart::kParetoMethod:
         if (pa.has("method")) return {pa.value_mark("method"), "pareto.method"};
         if (sv.has("algorithm")) return {sv.value_mark("algorithm"), "solver.algorithm"};

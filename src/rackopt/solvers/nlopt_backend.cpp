@@ -1,4 +1,4 @@
-// NLopt 2.7.1 adapter. Pitfalls handled here (docs/dependencies.md, "NLopt 2.7" and our
+// The NLopt 2.7.1 backend. Pitfalls handled here (docs/dependencies.md, "NLopt 2.7" and our
 // own probes of Debian 12's NLopt):
 //  * exceptions out of callbacks: nlopt.hpp would turn them into
 //    std::runtime_error("nlopt failure"); every callback catches everything
@@ -22,8 +22,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "rackopt/core/text.hpp"
 #include "rackopt/solvers/adapters.hpp"
 
 namespace rackopt::solvers::detail {
@@ -241,6 +243,123 @@ StartOutcome run_nlopt_start(EvaluationTracker& tracker, const SolverSettings& s
   tracker.rethrow_if_error();
   if (tracker.halt() != Halt::kNone) outcome.status.reset();
   return outcome;
+}
+
+}  // namespace rackopt::solvers::detail
+
+namespace rackopt::solvers::detail {
+
+namespace {
+
+// Algorithms that accept the constraint kinds the problem has, local ones
+// first (they are the usual fix), then global ones.
+std::vector<std::string> capable_algorithms(std::size_t ni, std::size_t ne) {
+  std::vector<std::string> local, global;
+  for (const NloptAlgorithmInfo& a : nlopt_algorithm_table()) {
+    if ((ni > 0 && !a.inequality) || (ne > 0 && !a.equality)) continue;
+    if (a.local == LocalSolver::kRequired) continue;  // named separately with their local algorithm
+    (a.global ? global : local).push_back(a.name);
+  }
+  local.insert(local.end(), global.begin(), global.end());
+  return local;
+}
+
+std::string constraint_phrase(std::size_t ni, std::size_t ne) {
+  std::ostringstream out;
+  if (ni > 0) out << ni << " inequality";
+  if (ni > 0 && ne > 0) out << " and ";
+  if (ne > 0) out << ne << " equality";
+  out << " constraint" << (ni + ne > 1 ? "s" : "");
+  return out.str();
+}
+
+bool is_local_algorithm(const NloptAlgorithmInfo& a) { return !a.global && a.local == LocalSolver::kNone; }
+
+std::vector<std::string> local_algorithm_names(bool need_inequality) {
+  std::vector<std::string> names;
+  for (const NloptAlgorithmInfo& a : nlopt_algorithm_table())
+    if (is_local_algorithm(a) && (!need_inequality || a.inequality)) names.push_back(a.name);
+  return names;
+}
+
+class NloptBackend final : public SolverBackend {
+ public:
+  std::string_view library() const override { return "nlopt"; }
+  std::vector<BackendAlgorithm> algorithms() const override {
+    std::vector<BackendAlgorithm> out;
+    for (const NloptAlgorithmInfo& a : nlopt_algorithm_table()) out.push_back({a.name, false, a.note});
+    return out;
+  }
+  std::string default_algorithm() const override { return "LN_COBYLA"; }
+  const std::vector<BackendOption>& options() const override {
+    static const std::vector<BackendOption> none;
+    return none;
+  }
+
+  std::optional<SolverSettingsRefusal> check(const SolverSettings& s, const ProblemShape& shape) const override {
+    const std::size_t n = shape.dimension, ni = shape.inequality, ne = shape.equality;
+    auto algorithm = [](std::string m) { return SolverSettingsRefusal{SolverSetting::kAlgorithm, std::move(m), ""}; };
+    auto local_algorithm = [](std::string m) {
+      return SolverSettingsRefusal{SolverSetting::kLocalAlgorithm, std::move(m), ""};
+    };
+    const NloptAlgorithmInfo* a = find_nlopt_algorithm(s.algorithm);
+    if (!a)
+      return algorithm("unknown NLopt algorithm '" + s.algorithm + "'; valid names: " + join(nlopt_algorithm_names()));
+
+    if ((ni > 0 && !a->inequality) || (ne > 0 && !a->equality)) {
+      std::string msg = std::string(a->name) + " cannot handle the " + constraint_phrase(ni, ne) +
+                        " of this problem; use " + join(capable_algorithms(ni, ne));
+      if (is_local_algorithm(*a)) msg += ", or AUGLAG with local_algorithm " + std::string(a->name);
+      return algorithm(msg);
+    }
+    if (ne > n)
+      return algorithm("NLopt 2.7.1 refuses more equality constraints (" + std::to_string(ne) + ") than variables (" +
+                       std::to_string(n) + "); remove redundant equalities or turn some into pairs of inequalities");
+
+    if (a->local == LocalSolver::kNone) {
+      if (!s.local_algorithm.empty())
+        return local_algorithm("local_algorithm '" + s.local_algorithm +
+                               "' is only used by AUGLAG and MLSL variants; " + a->name +
+                               " does not take one (leave local_algorithm empty)");
+      return std::nullopt;
+    }
+    const bool eq_only_penalized = std::string(a->name).find("AUGLAG_EQ") != std::string::npos;
+    const bool local_needs_inequality = eq_only_penalized && ni > 0;
+    if (s.local_algorithm.empty()) {
+      if (a->local == LocalSolver::kRequired)
+        return algorithm(std::string(a->name) + " needs local_algorithm (the sub-solver it drives); use one of " +
+                         join(local_algorithm_names(local_needs_inequality)));
+    } else {
+      const NloptAlgorithmInfo* l = find_nlopt_algorithm(s.local_algorithm);
+      if (!l || !is_local_algorithm(*l))
+        return local_algorithm("local_algorithm '" + s.local_algorithm + "' is not a local NLopt algorithm; use one of " +
+                               join(local_algorithm_names(local_needs_inequality)));
+      if (local_needs_inequality && !l->inequality)
+        return local_algorithm(std::string(a->name) + " passes the " + constraint_phrase(ni, 0) +
+                               " to its local_algorithm, and " + l->name + " cannot handle them; use one of " +
+                               join(local_algorithm_names(true)) +
+                               " as local_algorithm, or AUGLAG (which penalizes all constraints)");
+    }
+    return std::nullopt;
+  }
+
+  SolverResult minimize(const Problem& problem, std::span<const double> x0, const SolverSettings& settings,
+                        const SolverCallbacks& callbacks) const override {
+    const NloptAlgorithmInfo* algorithm = find_nlopt_algorithm(settings.algorithm);
+    const NloptAlgorithmInfo* local =
+        settings.local_algorithm.empty() ? nullptr : find_nlopt_algorithm(settings.local_algorithm);
+    return run_multistart(problem, x0, settings, callbacks,
+                          [&](EvaluationTracker& tracker, std::vector<double> x_start, int start) {
+                            return run_nlopt_start(tracker, settings, *algorithm, local, std::move(x_start), start);
+                          });
+  }
+};
+
+}  // namespace
+
+const SolverBackend& nlopt_backend() {
+  static const NloptBackend backend;
+  return backend;
 }
 
 }  // namespace rackopt::solvers::detail

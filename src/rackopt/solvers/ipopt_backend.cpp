@@ -1,4 +1,4 @@
-// Ipopt 3.11.9 adapter (TNLP). Pitfalls handled here (docs/dependencies.md, "Ipopt 3.11"):
+// The Ipopt 3.11.9 backend (TNLP). Pitfalls handled here (docs/dependencies.md, "Ipopt 3.11"):
 //  * Initialize("") so no ./ipopt.opt in the working directory changes a run;
 //  * no gradient_approximation option in 3.11: grad f and the (dense)
 //    constraint Jacobian come from our own finite differences, computed once
@@ -185,11 +185,12 @@ StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& s
   app->RethrowNonIpoptException(true);
   // "sb" must come first: it silences the banner printed by Initialize.
   set_option(*app, "sb", std::string("yes"));
-  set_option(*app, "print_level", settings.ipopt_print_level);
+  const SolverBackend& self = ipopt_backend();
+  set_option(*app, "print_level", static_cast<int>(self.option(settings, "ipopt_print_level")));
   set_option(*app, "hessian_approximation", std::string("limited-memory"));
   set_option(*app, "linear_solver", std::string("mumps"));
-  set_option(*app, "tol", settings.ipopt_tol);
-  set_option(*app, "max_iter", settings.ipopt_max_iterations);
+  set_option(*app, "tol", self.option(settings, "ipopt_tol"));
+  set_option(*app, "max_iter", static_cast<int>(self.option(settings, "ipopt_max_iterations")));
   // Ipopt's own feasibility test agrees with our re-check.
   set_option(*app, "constr_viol_tol", settings.constraint_tolerance);
   if (app->Initialize("") != Ipopt::Solve_Succeeded)
@@ -220,6 +221,53 @@ StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& s
     outcome.message += ": evaluation failed at the start point: " + tracker.start_point_message();
   if (tracker.halt() != Halt::kNone) outcome.status.reset();
   return outcome;
+}
+
+}  // namespace rackopt::solvers::detail
+
+namespace rackopt::solvers::detail {
+
+namespace {
+
+class IpoptBackend final : public SolverBackend {
+ public:
+  std::string_view library() const override { return "ipopt"; }
+  std::vector<BackendAlgorithm> algorithms() const override { return {}; }
+  std::string default_algorithm() const override { return ""; }
+  const std::vector<BackendOption>& options() const override {
+    static const std::vector<BackendOption> table = {
+        {"ipopt_tol", 1e-8, 0, 1e300, false, true, "Ipopt's tol: the convergence tolerance of the scaled KKT error"},
+        {"ipopt_max_iterations", 3000, 1, 100000000, true, false, "Ipopt's max_iter"},
+        {"ipopt_print_level", 0, 0, 12, true, false, "Ipopt's print_level (0 = silent)", true},
+    };
+    return table;
+  }
+
+  std::optional<SolverSettingsRefusal> check(const SolverSettings&, const ProblemShape& shape) const override {
+    if (shape.equality > shape.dimension)
+      return SolverSettingsRefusal{
+          SolverSetting::kLibrary,
+          "Ipopt needs at least as many variables as equality constraints; the problem has " +
+              std::to_string(shape.equality) + " equalities for " + std::to_string(shape.dimension) +
+              " variables (too few degrees of freedom)",
+          ""};
+    return std::nullopt;
+  }
+
+  SolverResult minimize(const Problem& problem, std::span<const double> x0, const SolverSettings& settings,
+                        const SolverCallbacks& callbacks) const override {
+    return run_multistart(problem, x0, settings, callbacks,
+                          [&](EvaluationTracker& tracker, std::vector<double> x_start, int start) {
+                            return run_ipopt_start(tracker, settings, std::move(x_start), start);
+                          });
+  }
+};
+
+}  // namespace
+
+const SolverBackend& ipopt_backend() {
+  static const IpoptBackend backend;
+  return backend;
 }
 
 }  // namespace rackopt::solvers::detail
