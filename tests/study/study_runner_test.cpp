@@ -26,22 +26,6 @@ std::string bits(const std::vector<double>& x) {
   return k;
 }
 
-double metric(const DesignResult& d, const std::string& label) {
-  for (std::size_t i = 0; i < d.metric_labels.size(); ++i)
-    if (d.metric_labels[i] == label) {
-      EXPECT_TRUE(d.metric_ok[i]) << label;
-      return d.metric_values[i];
-    }
-  ADD_FAILURE() << "no metric " << label;
-  return 0;
-}
-
-RunOptions options_in(const std::string& dir, unsigned threads = 1) {
-  RunOptions o;
-  o.out_dir = dir;
-  o.threads = threads;
-  return o;
-}
 
 std::vector<record::RecordedEvaluation> rows_of(const StudyResult& r, const StudySpec& spec) {
   StudyProblem p(spec);

@@ -1,10 +1,13 @@
 // Study specs built directly in C++ (the YAML loader is another module).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <string>
 
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/study/study_runner.hpp"
 #include "rackopt/study/study_spec.hpp"
 #include "support/scratch_dir.hpp"
 
@@ -68,5 +71,25 @@ inline ConstraintSpec constraint(const std::string& text, std::optional<double> 
 using rackopt::test_support::scratch_path;
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// The value of metric `label` of a design (a test failure when absent or
+// not computed).
+inline double metric(const DesignResult& d, const std::string& label) {
+  for (std::size_t i = 0; i < d.metric_labels.size(); ++i)
+    if (d.metric_labels[i] == label) {
+      EXPECT_TRUE(d.metric_ok[i]) << label;
+      return d.metric_values[i];
+    }
+  ADD_FAILURE() << "no metric " << label;
+  return 0;
+}
+
+// Run options writing to `dir` on `threads` threads, nothing else set.
+inline RunOptions options_in(const std::string& dir, unsigned threads = 1) {
+  RunOptions o;
+  o.out_dir = dir;
+  o.threads = threads;
+  return o;
+}
 
 }  // namespace rackopt::study::testing

@@ -186,6 +186,57 @@ TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
   }
 }
 
+TEST(StudyReport, FrontQualityInSummaryReportAndHistory) {
+  StudySpec spec = base_spec(StudyKind::kPareto);
+  spec.objectives.push_back(objective("min_stiffness", true));  // maximized: minimized as its negative
+  spec.pareto.points = 10;
+  StudyResult r = pareto_result(spec, 7, 3);
+  study::FrontSummary f;
+  f.requested = 10;
+  f.quality.points = 7;
+  f.quality.non_dominated = 7;
+  f.quality.hypervolume = 0.625;
+  f.quality.spacing = 0.125;
+  f.quality.ideal = {0.02, -3.0e7};      // minimized: -(largest min_stiffness)
+  f.quality.reference = {0.04, -1.0e7};  // -(smallest acceptable min_stiffness)
+  f.history_evaluations = {100, 200};
+  f.history_hypervolume = {0.5, 0.75};
+  f.shortfall = {"eps 3 found no feasible design"};
+  r.front_summary = f;
+  const std::string dir = scratch_path("front_quality");
+  const StudyReport rep = write_study_report(spec, r, dir);
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  const auto& q = j["front_quality"];
+  EXPECT_EQ(q["requested"], 10);
+  EXPECT_EQ(q["points"], 7);
+  EXPECT_EQ(q["hypervolume"].get<double>(), 0.625);
+  EXPECT_EQ(q["spacing"].get<double>(), 0.125);
+  // Reported in each metric's own sense: the maximized one positive again.
+  EXPECT_EQ(q["reference"]["min_stiffness"].get<double>(), 1.0e7);
+  EXPECT_EQ(q["ideal"]["stiffness_fluctuation"].get<double>(), 0.02);
+  ASSERT_EQ(q["hypervolume_history"].size(), 2u);
+  EXPECT_EQ(q["hypervolume_history"][1][0], 200);
+  EXPECT_EQ(q["hypervolume_history"][1][1].get<double>(), 0.75);
+  EXPECT_EQ(q["shortfall"][0], "eps 3 found no feasible design");
+  EXPECT_EQ(read_text(dir + "/hypervolume.csv"), "evaluations,hypervolume\n100,0.5\n200,0.75\n");
+  EXPECT_NE(read_text(dir + "/history.gp").find("hypervolume.csv"), std::string::npos);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("7 delivered of 10 requested"), std::string::npos);
+  EXPECT_NE(md.find("eps 3 found no feasible design"), std::string::npos);
+  EXPECT_NE(md.find("hypervolume: 0.625"), std::string::npos);
+}
+
+TEST(StudyReport, FourObjectiveFrontIsPlottedAsSixProjections) {
+  StudySpec spec = base_spec(StudyKind::kPareto);
+  spec.objectives.push_back(objective("supports_per_metre"));
+  spec.objectives.push_back(objective("min_stiffness", true));
+  spec.objectives.push_back(objective("contact_ratio", true));
+  const StudyResult r = pareto_result(spec, 9, 0);
+  const std::string dir = scratch_path("pareto4");
+  write_study_report(spec, r, dir);
+  EXPECT_NE(read_text(dir + "/pareto.gp").find("multiplot layout 2,3"), std::string::npos);
+}
+
 TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {
   StudySpec spec = base_spec(StudyKind::kSweep);
   StudyResult r;

@@ -27,12 +27,10 @@ std::vector<double> crowding_distances(const std::vector<std::vector<double>>& f
   return d;
 }
 
-ParetoResult select_front(std::vector<ParetoPoint> feasible, std::size_t points, double duplicate_tolerance) {
-  ParetoResult result;
-  std::vector<std::vector<double>> vectors;
-  for (const ParetoPoint& p : feasible) vectors.push_back(p.evaluation.objectives);
+std::vector<std::size_t> select_front_indices(const std::vector<std::vector<double>>& vectors, std::size_t points,
+                                              double duplicate_tolerance) {
   std::vector<std::size_t> kept = non_dominated(vectors);
-  if (kept.empty()) return result;
+  if (kept.empty()) return kept;
   const std::size_t m = vectors[kept[0]].size();
 
   std::vector<double> lo(m, std::numeric_limits<double>::infinity()), hi(m, -std::numeric_limits<double>::infinity());
@@ -60,12 +58,21 @@ ParetoResult select_front(std::vector<ParetoPoint> feasible, std::size_t points,
       if (d[j] <= d[worst]) worst = j;
     distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(worst));
   }
-
   std::stable_sort(distinct.begin(), distinct.end(),
                    [&](std::size_t a, std::size_t b) { return vectors[a] < vectors[b]; });
+  return distinct;
+}
+
+ParetoResult select_front(std::vector<ParetoPoint> feasible, std::size_t points, double duplicate_tolerance) {
+  ParetoResult result;
+  std::vector<std::vector<double>> vectors;
+  for (const ParetoPoint& p : feasible) vectors.push_back(p.evaluation.objectives);
+  const std::vector<std::size_t> kept = select_front_indices(vectors, points, duplicate_tolerance);
+  if (kept.empty()) return result;
+  const std::size_t m = vectors[kept[0]].size();
   result.ideal.assign(m, std::numeric_limits<double>::infinity());
   result.nadir.assign(m, -std::numeric_limits<double>::infinity());
-  for (std::size_t i : distinct) {
+  for (std::size_t i : kept) {
     for (std::size_t k = 0; k < m; ++k) {
       result.ideal[k] = std::min(result.ideal[k], vectors[i][k]);
       result.nadir[k] = std::max(result.nadir[k], vectors[i][k]);

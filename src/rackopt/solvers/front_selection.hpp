@@ -10,6 +10,12 @@
 
 namespace rackopt::solvers {
 
+// The rule of select_front on bare vectors (minimized objectives, all of one
+// size): the indices into `vectors` of the kept points, sorted by their
+// vectors (objective 0, then 1, ...; the earlier index on ties).
+std::vector<std::size_t> select_front_indices(const std::vector<std::vector<double>>& vectors, std::size_t points,
+                                              double duplicate_tolerance);
+
 // `feasible` holds feasible points of one problem (all objectives finite,
 // minimized). Returns a ParetoResult whose `front` is
 //   1. the non-dominated points, earliest first among equal vectors;

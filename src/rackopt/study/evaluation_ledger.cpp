@@ -209,6 +209,13 @@ void EvaluationLedger::track(const DesignEvaluation& d, const std::string& label
       if (!tl || v < tl->max_violation) tl = to_result(d, label);
     }
   }
+  if (spec_.kind == StudyKind::kPareto && solvers::is_feasible(e, spec_.solver.constraint_tolerance)) {
+    // The solver minimizes value / scale (negated when maximized): times the
+    // scale is the minimized value in its own unit.
+    std::vector<double> v = e.objectives;
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] *= base_.objective_scales()[i];
+    feasible_objectives_.emplace_back(result_.best_history.size(), std::move(v));
+  }
   const bool maximize = has_objective && spec_.objectives[0].maximize;
   double h = maximize ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
   if (best_ && has_objective) h = best_->objectives[0];

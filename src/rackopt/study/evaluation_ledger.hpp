@@ -83,6 +83,9 @@ class EvaluationLedger {
   std::optional<DesignResult> best_of_tag(std::size_t t) const;
   std::optional<DesignResult> least_infeasible_of_tag(std::size_t t) const;
 
+  // pareto: every feasible design counted so far, in order, with its
+  // objectives minimized in their own units (front_summary.hpp).
+  const std::vector<FeasibleObjectives>& feasible_objectives() const { return feasible_objectives_; }
   // The distinct model warnings in first-use order, at most a screenful
   // plus a line counting the rest.
   std::vector<std::string> warnings() const;
@@ -112,6 +115,7 @@ class EvaluationLedger {
   std::map<std::size_t, std::optional<DesignResult>> tag_best_, tag_least_;
   std::map<std::size_t, double> tag_best_scaled_;
   bool any_ok_ = false;
+  std::vector<FeasibleObjectives> feasible_objectives_;
   std::set<std::string> warning_set_;
   std::vector<std::string> warnings_;
   std::size_t dropped_warnings_ = 0;

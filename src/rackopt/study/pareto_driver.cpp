@@ -2,7 +2,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rackopt/core/text.hpp"
+#include "rackopt/solvers/front_selection.hpp"
 #include "rackopt/solvers/pareto.hpp"
+#include "rackopt/study/front_summary.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 
@@ -33,6 +36,10 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   solvers::ParetoSettings ps = spec.pareto;
   ps.solver = solver;
   std::vector<DesignResult> candidates;
+  std::vector<std::size_t> candidate_combination;  // the combination of each candidate
+  // Each combination's phase text and how many front points it gave.
+  std::vector<std::pair<std::string, std::size_t>> combination_of_front;
+  std::vector<std::string> shortfall;
   std::vector<StudyStatus> statuses;
   for (std::size_t c = 0; c < combos; ++c) {
     if (ledger.stop_requested()) break;
@@ -46,7 +53,11 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       const Obtained o = ledger.obtain(p, x);
       ledger.settle(o, phase, false);
       const DesignResult d = ledger.to_result(o.design, phase);
-      if (d.feasible) candidates.push_back(d);
+      if (d.feasible) {
+        candidates.push_back(d);
+        candidate_combination.push_back(c);
+      }
+      combination_of_front.push_back({phase, d.feasible ? 1u : 0u});
       statuses.push_back(d.feasible ? StudyStatus::kOk : StudyStatus::kNoFeasiblePoint);
       continue;
     }
@@ -66,44 +77,68 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
     }
     rp.settle_pending();
     statuses.push_back(study_status(pr.status));
+    const std::string where = phase.empty() ? "" : phase + ": ";
+    for (const solvers::ParetoPoint& ip : pr.infeasible)
+      shortfall.push_back(where + ip.label + " found no feasible design" +
+                          (ip.evaluation.ok() ? "" : " (" + ip.evaluation.message + ")"));
+    if (!pr.dominated.empty()) {
+      std::vector<std::string> labels;
+      for (const solvers::ParetoPoint& dp : pr.dominated) labels.push_back(dp.label);
+      shortfall.push_back(where + join(labels) + (labels.size() == 1 ? " gave a design" : " gave designs") +
+                          " dominated by, or within pareto.duplicate_tolerance of, another front point");
+    }
+    if (spec.pareto.method == solvers::Scalarization::kPopulation && pr.front.size() < spec.pareto.points)
+      shortfall.push_back(where + spec.solver.algorithm + " found " + std::to_string(pr.front.size()) +
+                          " distinct non-dominated feasible designs in " + std::to_string(pr.evaluations) +
+                          " evaluations (" + std::to_string(pr.generations) + " generations of " +
+                          std::to_string(pr.population) + "); raise max_evaluations or population");
+    const std::size_t first_candidate = candidates.size();
     for (const solvers::ParetoPoint& fp : pr.front) {
       const std::vector<double> x = p.to_design(fp.x);
       const std::string label = phase.empty() ? fp.label : phase + ": " + fp.label;
       std::optional<DesignEvaluation> o = ledger.recorded(x);
       const DesignEvaluation d = o ? *o : p.evaluate_design(x, ledger.threads());
       DesignResult r = ledger.to_result(d, label);
-      if (r.feasible) candidates.push_back(std::move(r));
+      if (r.feasible) {
+        candidates.push_back(std::move(r));
+        candidate_combination.push_back(c);
+      }
     }
+    combination_of_front.push_back({phase, candidates.size() - first_candidate});
   }
   // Merge the combinations' fronts: dominance on the minimized (scaled)
-  // objectives equals dominance in the metrics' own senses.
-  std::vector<std::vector<double>> vectors;
-  for (const auto& d : candidates) {
+  // objectives equals dominance in the metrics' own senses. The merged
+  // front follows the rule of one front (non-dominated, no near-duplicates,
+  // at most pareto.points, thinned by crowding).
+  auto minimized_scaled = [&](const DesignResult& d) {
     std::vector<double> v;
     for (std::size_t i = 0; i < n_obj; ++i) {
       const double s = base.objective_scales()[i];
       v.push_back((spec.objectives[i].maximize ? -d.objectives[i] : d.objectives[i]) / s);
     }
-    vectors.push_back(std::move(v));
-  }
+    return v;
+  };
+  std::vector<std::vector<double>> vectors;
+  for (const auto& d : candidates) vectors.push_back(minimized_scaled(d));
   std::vector<std::vector<double>> kept_vectors;
-  for (std::size_t i : solvers::non_dominated(vectors)) {
+  std::vector<std::size_t> kept_per_combination(combos, 0);
+  std::vector<std::size_t> kept =
+      solvers::select_front_indices(vectors, spec.pareto.points, spec.pareto.duplicate_tolerance);
+  // Reported in objective 0's own sense, ascending (then the others).
+  std::stable_sort(kept.begin(), kept.end(),
+                   [&](std::size_t a, std::size_t b) { return front_less(candidates[a], candidates[b]); });
+  for (std::size_t i : kept) {
     result.front.push_back(candidates[i]);
     kept_vectors.push_back(vectors[i]);
+    ++kept_per_combination[candidate_combination[i]];
   }
-  std::vector<std::size_t> order(result.front.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return front_less(result.front[a], result.front[b]); });
-  {
-    std::vector<DesignResult> f;
-    std::vector<std::vector<double>> v;
-    for (std::size_t i : order) {
-      f.push_back(result.front[i]);
-      v.push_back(kept_vectors[i]);
+  if (combos > 1 && result.front.size() < spec.pareto.points) {
+    for (std::size_t c = 0; c < combination_of_front.size(); ++c) {
+      const auto& [phase, given] = combination_of_front[c];
+      if (given > kept_per_combination[c])
+        shortfall.push_back(phase + ": " + std::to_string(given - kept_per_combination[c]) + " of its " +
+                            std::to_string(given) + " front points are dominated by other combinations' points");
     }
-    result.front = std::move(f);
-    kept_vectors = std::move(v);
   }
   if (!result.front.empty()) {
     // Chosen: closest to the ideal point (or least weighted sum) with every
@@ -130,6 +165,19 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       }
     }
     result.best = result.front[*result.chosen];
+  }
+  {
+    FrontSummary summary;
+    if (!kept_vectors.empty()) {
+      // Minimized own units: the scaled vectors times their scales.
+      std::vector<std::vector<double>> own = kept_vectors;
+      for (auto& v : own)
+        for (std::size_t i = 0; i < n_obj; ++i) v[i] *= base.objective_scales()[i];
+      summary = summarize_front(own, {}, ledger.feasible_objectives(), result.evaluations);
+    }
+    summary.requested = spec.pareto.points;
+    if (result.front.size() < spec.pareto.points) summary.shortfall = std::move(shortfall);
+    result.front_summary = std::move(summary);
   }
   if (ledger.stopped()) {
     status = StudyStatus::kStopped;

@@ -15,6 +15,7 @@
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
+#include "rackopt/study/front_summary.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/study_status.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
@@ -53,6 +54,7 @@ struct StudyResult {
   std::optional<DesignResult> least_infeasible;  // when no feasible design was found
   std::vector<DesignResult> front;             // pareto: feasible, non-dominated, sorted by objective 0
   std::optional<std::size_t> chosen;           // pareto: index into front of the chosen design
+  std::optional<FrontSummary> front_summary;   // pareto: quality, hypervolume history, shortfall
   std::vector<DesignResult> sweep_points;      // sweep: every point in sampler order
   std::vector<double> best_history;            // best feasible objective 0 (own sense) after each evaluation
   std::size_t evaluations = 0;                 // model evaluations this study needed (recorded + new)

@@ -9,6 +9,7 @@
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/study_report/display_units.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
+#include "rackopt/study_report/front_quality_report.hpp"
 #include "rackopt/study_report/optimum_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
 
@@ -145,6 +146,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
       o << "\n";
     }
     o << "\n";
+    o << front_quality_markdown(spec, result);
     if (result.chosen && *result.chosen < result.front.size()) {
       o << "### Chosen design (front point " << *result.chosen << ")\n\n";
       md_design(o, spec, result.front[*result.chosen]);

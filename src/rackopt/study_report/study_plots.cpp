@@ -93,17 +93,19 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
   const std::vector<int> ecols = evaluations_columns(evaluations_csv, wanted);
   const std::string eval_name = fs::path(evaluations_csv).filename().string();
 
+  // Every pair of objectives: 1 panel for 2 objectives, 3 in a row for 3,
+  // 6 in two rows for 4.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  if (n == 2) {
-    pairs = {{0, 1}};
-  } else {
-    pairs = {{0, 1}, {0, 2}, {1, 2}};
-  }
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b) pairs.emplace_back(a, b);
+  const std::size_t rows = pairs.size() > 3 ? 2 : 1, columns = (pairs.size() + rows - 1) / rows;
   std::ostringstream o;
-  o << gp_header("pareto.png", n == 2 ? 1100 : 1800, n == 2 ? 800 : 650);
+  o << gp_header("pareto.png", n == 2 ? 1100 : 600 * static_cast<int>(columns),
+                 n == 2 ? 800 : 650 * static_cast<int>(rows));
   o << "set key outside bottom center horizontal\n";
   if (pairs.size() > 1) {
-    o << "set multiplot layout 1," << pairs.size() << " title " << gnuplot_quote(spec.name + ": Pareto front") << "\n";
+    o << "set multiplot layout " << rows << "," << columns << " title "
+      << gnuplot_quote(spec.name + ": Pareto front") << "\n";
   } else {
     o << "set title " << gnuplot_quote(spec.name + ": Pareto front") << "\n";
   }
@@ -144,6 +146,18 @@ std::string history_gnuplot(const StudySpec& spec, const std::string& label, std
   o << "set ylabel " << gnuplot_quote("best feasible " + axis_label(label, u.display)) << "\n";
   o << "set key top right\n";
   o << "plot 'history.csv' skip 1 using 1:" << gp_value(2, u.factor) << " with steps lw 2 title 'best feasible so far'\n";
+  return o.str();
+}
+
+std::string hypervolume_gnuplot(const StudySpec& spec, std::size_t evaluations) {
+  std::ostringstream o;
+  o << gp_header("history.png", 1100, 700);
+  o << "set title " << gnuplot_quote(spec.name + ": front quality") << "\n";
+  o << "set xlabel 'evaluation'\nset xrange [0:" << std::max<std::size_t>(evaluations, 1) << "]\n";
+  o << "set ylabel 'hypervolume (fraction of the box from the ideal to the reference point)'\n";
+  o << "set yrange [0:*]\nset key bottom right\n";
+  o << "plot 'hypervolume.csv' skip 1 using 1:2 with linespoints pt 7 ps 0.6 lw 2 "
+       "title 'feasible designs evaluated so far'\n";
   return o.str();
 }
 

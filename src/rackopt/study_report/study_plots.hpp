@@ -23,6 +23,9 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
 // history.png from history.csv: best feasible `label` so far over
 // `evaluations` evaluations, in the metric's display unit.
 std::string history_gnuplot(const StudySpec& spec, const std::string& label, std::size_t evaluations);
+// history.png of a pareto study from hypervolume.csv: the normalized
+// hypervolume of the feasible designs evaluated so far over `evaluations`.
+std::string hypervolume_gnuplot(const StudySpec& spec, std::size_t evaluations);
 
 // sweep.png from sweep.csv (`t`: its layout): one panel per (metric,
 // variable), at most 6 of each, infeasible points grey behind the feasible.

@@ -11,6 +11,7 @@
 #include "rackopt/output/wear_files.hpp"
 #include "rackopt/study_report/design_tables.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
+#include "rackopt/study_report/front_quality_report.hpp"
 #include "rackopt/study_report/report_markdown.hpp"
 #include "rackopt/study_report/study_plots.hpp"
 
@@ -68,6 +69,8 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   const std::optional<DesignTable> sweep = sweep_table(spec, labels, result);
   if (sweep) rep.files.add("sweep_csv", write("sweep.csv", sweep->text));
   if (const auto history = history_table(spec, result)) rep.files.add("history_csv", write("history.csv", *history));
+  const std::optional<std::string> hypervolume = hypervolume_table(result);
+  if (hypervolume) rep.files.add("hypervolume_csv", write("hypervolume.csv", *hypervolume));
 
   if (spec.output.stiffness_curve) {
     if (result.best_curve) {
@@ -87,12 +90,15 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   write_fe_verification_files(spec, result, rep.files, write, plot);
 
   const std::size_t n_obj = spec.objectives.size();
-  if (front && (n_obj == 2 || n_obj == 3)) {
+  if (front && n_obj >= 2 && n_obj <= 4) {
     plot("pareto_png", "pareto.gp", pareto_gnuplot(spec, *front, result.evaluations_csv_path), "pareto.png");
   }
   bool any_history = false;
   for (double h : result.best_history) any_history = any_history || std::isfinite(h);
-  if (any_history && !spec.objectives.empty()) {
+  if (hypervolume) {
+    // A front's convergence is its hypervolume, not its first objective.
+    plot("history_png", "history.gp", hypervolume_gnuplot(spec, result.best_history.size()), "history.png");
+  } else if (any_history && !spec.objectives.empty()) {
     plot("history_png", "history.gp", history_gnuplot(spec, spec.objectives[0].label, result.best_history.size()),
          "history.png");
   }

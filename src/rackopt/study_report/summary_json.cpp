@@ -8,6 +8,7 @@
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/study_report/display_units.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
+#include "rackopt/study_report/front_quality_report.hpp"
 #include "rackopt/study_report/optimum_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
 #include "rackopt/study_report/study_report.hpp"
@@ -152,6 +153,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
     } else {
       j.null();
     }
+    front_quality_json(j, spec, result);
   }
   if (spec.kind == StudyKind::kSweep) {
     const std::size_t feasible = feasible_points(result);
