@@ -46,7 +46,7 @@ const std::string kOptimize = kHead +
 
 TEST(StudyLoader, ShippedStudiesLoad) {
   for (const char* name : {"rack_railway_sizing.yaml", "ship_lift_wear_tradeoff.yaml", "spall_severity_sweep.yaml",
-                           "ship_lift_reliability.yaml"}) {
+                           "ship_lift_reliability.yaml", "ship_lift_four_objectives.yaml"}) {
     SCOPED_TRACE(name);
     StudySpec s;
     ASSERT_NO_THROW(s = studyfile::load_study_file(kStudies + "/" + name)) << name;

@@ -300,6 +300,50 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   EXPECT_GE(hi - lo, 0.5 * (1 / 0.6 - 1 / 1.6));
 }
 
+TEST(StudyAcceptance, FourObjectiveShipLiftFrontByNsga2) {
+  // The shipped 4-objective study with a smaller budget: a population of 24
+  // for 19 generations, 12 points.
+  const StudySpec spec = studyfile::load_study_file(
+      kStudies + "ship_lift_four_objectives.yaml",
+      {"solver.population=24", "solver.max_evaluations=480", "pareto.points=12"});
+  ASSERT_EQ(spec.objectives.size(), 4u);
+  const StudyResult r = run_study(spec, options_in(scratch_path("ship_lift_four"), 2));
+  ASSERT_EQ(r.front.size(), 12u) << r.status;
+  EXPECT_LE(r.evaluations, 480u);
+  std::vector<std::vector<double>> f;
+  for (std::size_t i = 0; i < r.front.size(); ++i) {
+    const DesignResult& p = r.front[i];
+    const std::string what = "front point " + std::to_string(i) + " (" + p.label + ")";
+    EXPECT_TRUE(p.feasible) << what;
+    expect_inside_bounds(spec, p.x, what);
+    const metrics::MetricValues v = evaluate_ourselves(spec, p.x);
+    expect_constraints_hold(spec, v, what);
+    for (std::size_t k = 0; k < spec.objectives.size(); ++k) {
+      const metrics::MetricValue& m = value_of(v, spec.objectives[k].label);
+      ASSERT_TRUE(m.ok) << what;
+      EXPECT_EQ(m.value, p.objectives[k]) << what << ": " << m.label;
+    }
+    f.push_back(minimized(spec, p));
+  }
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (i != j) {
+        EXPECT_FALSE(dominates_min(f[j], f[i])) << "front point " << j << " dominates " << i;
+      }
+    }
+  // supports_per_metre = 1/span: the front spreads over at least half of
+  // its closed-form range 1/1.6 .. 1/0.6 per metre.
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& p : f) {
+    lo = std::min(lo, p[3]);
+    hi = std::max(hi, p[3]);
+  }
+  EXPECT_GE(hi - lo, 0.5 * (1 / 0.6 - 1 / 1.6));
+  ASSERT_TRUE(r.front_summary);
+  EXPECT_GT(r.front_summary->quality.hypervolume, 0.0);
+  EXPECT_EQ(r.front_summary->history_evaluations.back(), r.evaluations);
+}
+
 }  // namespace
 }  // namespace rackopt::study
 
