@@ -345,37 +345,103 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
     }
   }
 
-  // Filter: feasible only, sorted by (primary, other objectives, solve order).
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (all[i].feasible)
-      order.push_back(i);
-    else
-      result.infeasible.push_back(all[i]);
-  }
-  auto key = [&](std::size_t i) {
-    std::vector<double> k{all[i].evaluation.objectives[settings.primary]};
-    for (std::size_t j = 0; j < m; ++j)
-      if (j != settings.primary) k.push_back(all[i].evaluation.objectives[j]);
-    return k;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
-  std::vector<std::vector<double>> vectors;
-  for (std::size_t i : order) vectors.push_back(all[i].evaluation.objectives);
-  const std::vector<std::size_t> kept = non_dominated(vectors);
-  std::vector<bool> is_kept(order.size(), false);
-  for (std::size_t k : kept) is_kept[k] = true;
-  for (std::size_t pos = 0; pos < order.size(); ++pos) {
-    ParetoPoint& p = all[order[pos]];
-    bool keep = is_kept[pos];
-    for (std::size_t f = 0; keep && f < result.front.size(); ++f) {
-      bool same = true;
-      for (std::size_t i = 0; i < m && same; ++i)
-        same = std::abs(p.evaluation.objectives[i] - result.front[f].evaluation.objectives[i]) <=
-               settings.duplicate_tolerance * range[i];
-      keep = !same;
+  // The distinct front of `all` so far: feasible, non-dominated, no
+  // near-duplicates (within duplicate_tolerance * range), in the order
+  // (primary, other objectives, solve order): indices into `all`.
+  auto distinct_front = [&] {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (all[i].feasible) order.push_back(i);
+    auto key = [&](std::size_t i) {
+      std::vector<double> k{all[i].evaluation.objectives[settings.primary]};
+      for (std::size_t j = 0; j < m; ++j)
+        if (j != settings.primary) k.push_back(all[i].evaluation.objectives[j]);
+      return k;
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+    std::vector<std::vector<double>> vectors;
+    for (std::size_t i : order) vectors.push_back(all[i].evaluation.objectives);
+    std::vector<bool> is_kept(order.size(), false);
+    for (std::size_t k : non_dominated(vectors)) is_kept[k] = true;
+    std::vector<std::size_t> front;
+    for (std::size_t pos = 0; pos < order.size(); ++pos) {
+      if (!is_kept[pos]) continue;
+      const ParetoPoint& p = all[order[pos]];
+      const bool duplicate = std::any_of(front.begin(), front.end(), [&](std::size_t f) {
+        for (std::size_t i = 0; i < m; ++i)
+          if (std::abs(p.evaluation.objectives[i] - all[f].evaluation.objectives[i]) >
+              settings.duplicate_tolerance * range[i])
+            return false;
+        return true;
+      });
+      if (!duplicate) front.push_back(order[pos]);
     }
-    (keep ? result.front : result.dominated).push_back(std::move(p));
+    return front;
+  };
+
+  // eps-constraint: a grid leaves gaps where sub-problems landed on the same
+  // design or found none feasible. Fill them while the front is short: bound
+  // the other objectives halfway between the two front points farthest from
+  // each other's nearest neighbours and warm-start from one of them; a pair
+  // is tried once, and at most twice the missing count of sub-problems run.
+  if (settings.method == Scalarization::kEpsilonConstraint && any_feasible_anchor && !stopped) {
+    std::vector<std::pair<std::size_t, std::size_t>> tried;
+    const std::size_t first_count = distinct_front().size();
+    const std::size_t attempts = first_count < settings.points ? 2 * (settings.points - first_count) : 0;
+    for (std::size_t attempt = 0; attempt < attempts && !stopped; ++attempt) {
+      const std::vector<std::size_t> front = distinct_front();
+      if (front.size() >= settings.points || front.size() < 2) break;
+      auto distance = [&](std::size_t a, std::size_t b) {
+        double d = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+          const double t = (all[a].evaluation.objectives[i] - all[b].evaluation.objectives[i]) / range[i];
+          d += t * t;
+        }
+        return d;
+      };
+      // The untried pair (p, nearest neighbour of p) of largest distance.
+      std::optional<std::pair<std::size_t, std::size_t>> widest;
+      double widest_d = -1;
+      for (std::size_t a : front) {
+        std::size_t nearest = a;
+        double nd = std::numeric_limits<double>::infinity();
+        for (std::size_t b : front) {
+          if (b == a) continue;
+          const std::pair<std::size_t, std::size_t> pair{std::min(a, b), std::max(a, b)};
+          if (std::find(tried.begin(), tried.end(), pair) != tried.end()) continue;
+          const double d = distance(a, b);
+          if (d < nd) {
+            nd = d;
+            nearest = b;
+          }
+        }
+        if (nearest != a && nd > widest_d) {
+          widest_d = nd;
+          widest = std::pair<std::size_t, std::size_t>{std::min(a, nearest), std::max(a, nearest)};
+        }
+      }
+      if (!widest) break;
+      tried.push_back(*widest);
+      const ParetoPoint& pa = all[widest->first];
+      const ParetoPoint& pb = all[widest->second];
+      std::vector<ScalarizedProblem::Bound> bounds;
+      for (std::size_t j = 0; j < m; ++j)
+        if (j != settings.primary)
+          bounds.push_back({j, 0.5 * (pa.evaluation.objectives[j] + pb.evaluation.objectives[j])});
+      const std::vector<double> start = pa.x;
+      const ScalarizedProblem sub = ScalarizedProblem::epsilon(problem, settings.primary, bounds, result.ideal, range);
+      std::optional<ParetoPoint> p = solve(sub, "eps fill " + std::to_string(attempt + 1), start);
+      if (p) all.push_back(std::move(*p));
+    }
+  }
+
+  const std::vector<std::size_t> kept = distinct_front();
+  std::vector<bool> in_front(all.size(), false);
+  for (std::size_t i : kept) in_front[i] = true;
+  for (std::size_t i : kept) result.front.push_back(all[i]);
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (in_front[i]) continue;
+    (all[i].feasible ? result.dominated : result.infeasible).push_back(std::move(all[i]));
   }
 
   if (stopped)
