@@ -122,7 +122,7 @@ void run(benchmark::State& state, rs::SolverSettings s, bool with_observer) {
   const std::vector<double> x0(p.dimension(), 2.0);
   s.xtol_rel = 0;
   s.ftol_rel = 0;
-  s.options["ipopt_tol"] = 1e-14;
+  if (s.library == "ipopt") s.options["ipopt_tol"] = 1e-14;
   rs::SolverCallbacks cb;
   std::size_t observed = 0;
   if (with_observer) cb.observer = [&observed](const rs::EvaluationRecord&) { ++observed; };

@@ -150,7 +150,7 @@ TEST(Settings, MessagesSayWhatIsWrongAndWhatToUse) {
 
   rs::SolverSettings lib = nlopt_settings("LN_COBYLA");
   lib.library = "snopt";
-  EXPECT_NE(rs::check_solver_settings(lib, p).find("use \"nlopt\" or \"ipopt\""), std::string::npos);
+  EXPECT_NE(rs::check_solver_settings(lib, p).find("use \"nlopt\", \"ipopt\", \"pagmo\""), std::string::npos);
 
   // Accepted spellings; the Ipopt library ignores the algorithm name.
   EXPECT_EQ(rs::check_solver_settings(nlopt_settings("NLOPT_LN_COBYLA"), p), "");

@@ -238,7 +238,7 @@ TEST(Budget, StopRequestAndTimeLimit) {
   for (rs::SolverSettings s : {nlopt_settings("GN_DIRECT_L"), ipopt_settings()}) {
     s.max_seconds = 0.04;
     s.central_differences = true;
-    s.options["ipopt_tol"] = 1e-14;  // would otherwise converge before the limit
+    if (s.library == "ipopt") s.options["ipopt_tol"] = 1e-14;  // would otherwise converge before the limit
     s.xtol_rel = 0;
     s.ftol_rel = 0;
     const auto t0 = std::chrono::steady_clock::now();
