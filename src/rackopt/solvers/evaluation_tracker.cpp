@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <sstream>
+#include <stdexcept>
 
 namespace rackopt::solvers::detail {
 
@@ -107,58 +109,92 @@ Evaluation EvaluationTracker::sanitized(Evaluation e) const {
 }
 
 Evaluation EvaluationTracker::at(const double* x_in, bool gradient_probe) {
-  std::vector<double> x(x_in, x_in + n_);
-  // Models never see a point outside the box (NEWUOA and PRAXIS may step out,
-  // Ipopt relaxes bounds by 1e-8 relative).
-  bool finite = true;  // no NaN (an infinite coordinate just clamps to its bound)
-  for (std::size_t i = 0; i < n_; ++i) {
-    finite = finite && !std::isnan(x[i]);
-    x[i] = std::clamp(x[i], lower_[i], upper_[i]);
-  }
+  return at_batch({std::vector<double>(x_in, x_in + n_)}, gradient_probe).front();
+}
 
+std::vector<Evaluation> EvaluationTracker::at_batch(const std::vector<std::vector<double>>& xs_in,
+                                                    bool gradient_probe) {
   // Checked before the memo: a solver cycling on memoized points must still
   // see the stop request, the clock and a hard cap (docs/solvers.md, "Budget").
   if (halt_ != Halt::kNone) throw RunHalted{halt_ == Halt::kError ? Halt::kStop : halt_};
   poll();
-  if (requests_ >= request_cap_) throw RunHalted{Halt::kRequests};
-  ++requests_;
-  if (!finite) {
-    // A solver that lost its way (NaN step): never hand NaN to the model;
-    // the failure steers the solver back like any failed design.
-    Evaluation e;
-    e.status = EvaluationStatus::kFailed;
-    e.message = "the solver proposed a point with a NaN coordinate (not evaluated)";
-    return e;
+  std::vector<Evaluation> out(xs_in.size());
+  std::vector<std::vector<double>> xs = xs_in;
+  std::vector<bool> answered(xs.size(), false);
+  // New distinct points in order, and for each batch point the new point it is.
+  std::vector<std::vector<double>> fresh;
+  std::vector<std::size_t> fresh_of(xs.size(), 0);
+  std::map<std::vector<double>, std::size_t> fresh_index;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    std::vector<double>& x = xs[k];
+    // Models never see a point outside the box (NEWUOA and PRAXIS may step
+    // out, Ipopt relaxes bounds by 1e-8 relative).
+    bool finite = true;  // no NaN (an infinite coordinate just clamps to its bound)
+    for (std::size_t i = 0; i < n_; ++i) {
+      finite = finite && !std::isnan(x[i]);
+      x[i] = std::clamp(x[i], lower_[i], upper_[i]);
+    }
+    if (requests_ >= request_cap_) throw RunHalted{Halt::kRequests};
+    ++requests_;
+    if (!finite) {
+      // A solver that lost its way (NaN step): never hand NaN to the model;
+      // the failure steers the solver back like any failed design.
+      out[k].status = EvaluationStatus::kFailed;
+      out[k].message = "the solver proposed a point with a NaN coordinate (not evaluated)";
+      answered[k] = true;
+    } else if (auto hit = memo_.find(x); hit != memo_.end()) {
+      out[k] = hit->second;
+      answered[k] = true;
+    } else if (auto seen = fresh_index.find(x); seen != fresh_index.end()) {
+      fresh_of[k] = seen->second;
+    } else {
+      fresh_of[k] = fresh.size();
+      fresh_index.emplace(x, fresh.size());
+      fresh.push_back(x);
+    }
   }
-  if (auto hit = memo_.find(x); hit != memo_.end()) return hit->second;
+  if (fresh.empty()) return out;
 
-  if (evaluations_ >= settings_.max_evaluations) throw RunHalted{Halt::kBudget};
+  const std::size_t room = settings_.max_evaluations > evaluations_ ? settings_.max_evaluations - evaluations_ : 0;
+  if (room == 0) throw RunHalted{Halt::kBudget};
+  const bool cut = fresh.size() > room;
+  if (cut) fresh.resize(room);
 
   const auto t0 = std::chrono::steady_clock::now();
-  Evaluation e = sanitized(problem_.evaluate(std::span<const double>(x)));
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<Evaluation> results = problem_.evaluate_batch(fresh);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() /
+                         static_cast<double>(fresh.size());
+  if (results.size() != fresh.size())
+    throw std::logic_error("evaluate_batch returned " + std::to_string(results.size()) + " evaluations for " +
+                           std::to_string(fresh.size()) + " points");
 
-  const std::size_t index = evaluations_;
-  record(x, e);
-  if (gradient_probe) ++probes_;
-  if (index == start_first_index_ && !e.ok()) {
-    start_point_failed_ = true;
-    start_point_message_ = e.message;
+  for (std::size_t j = 0; j < fresh.size(); ++j) {
+    const std::vector<double>& x = fresh[j];
+    Evaluation& e = results[j];
+    e = sanitized(std::move(e));
+    const std::size_t index = evaluations_;
+    record(x, e);
+    if (gradient_probe) ++probes_;
+    if (index == start_first_index_ && !e.ok()) {
+      start_point_failed_ = true;
+      start_point_message_ = e.message;
+    }
+    if (memo_.size() < kMemoLimit) memo_.emplace(x, e);
+    if (callbacks_.observer) {
+      EvaluationRecord rec;
+      rec.index = index;
+      rec.x = x;
+      rec.evaluation = e;
+      rec.start = start_;
+      rec.gradient_probe = gradient_probe;
+      rec.seconds = seconds;
+      callbacks_.observer(rec);
+    }
   }
-
-  if (memo_.size() < kMemoLimit) memo_.emplace(x, e);
-
-  if (callbacks_.observer) {
-    EvaluationRecord rec;
-    rec.index = index;
-    rec.x = x;
-    rec.evaluation = e;
-    rec.start = start_;
-    rec.gradient_probe = gradient_probe;
-    rec.seconds = seconds;
-    callbacks_.observer(rec);
-  }
-  return e;
+  if (cut) throw RunHalted{Halt::kBudget};
+  for (std::size_t k = 0; k < xs.size(); ++k)
+    if (!answered[k]) out[k] = results[fresh_of[k]];
+  return out;
 }
 
 void EvaluationTracker::record(const std::vector<double>& x, const Evaluation& e) {
@@ -227,21 +263,17 @@ const Jacobian& EvaluationTracker::jacobian(const double* x_in) {
   Jacobian jac;
   jac.rows = rows;
   jac.values.assign(rows * n_, 0.0);
-  std::vector<double> center, plus, minus;
+  std::vector<double> center;
   jac.center_ok = stacked(at(xc.data()), center);
   if (jac.center_ok) {
-    std::vector<double> probe = xc;
-    // Evaluates the stacked vector at xc + s*e_i clamped into the box;
-    // returns the step actually taken (after rounding and clamping) or 0
-    // when the probe failed or did not move x (no information).
-    auto take = [&](std::size_t i, double s, std::vector<double>& out) -> double {
-      probe[i] = std::clamp(xc[i] + s, lower_[i], upper_[i]);
-      const double actual = probe[i] - xc[i];
-      const bool ok = actual != 0.0 && stacked(at(probe.data(), true), out);
-      probe[i] = xc[i];
-      return ok ? actual : 0.0;
+    // Each variable's probe plan: the step(s) to take now, and for a forward
+    // difference the other side to try when the first probe fails.
+    struct Plan {
+      double first = 0, second = 0;  // steps to evaluate in the first batch (second: central only)
+      double fallback = 0;           // forward: the other side, evaluated only if `first` failed
     };
     constexpr double kEps = std::numeric_limits<double>::epsilon();
+    std::vector<Plan> plans(n_);
     for (std::size_t i = 0; i < n_; ++i) {
       const double range = upper_[i] - lower_[i];
       // A step below ~16 ulp of |x| is rounding noise or rounds to no step
@@ -251,32 +283,80 @@ const Jacobian& EvaluationTracker::jacobian(const double* x_in) {
       const double h = std::min(std::max(settings_.gradient_step * range, 16.0 * kEps * magnitude), 0.5 * range);
       const bool plus_inside = xc[i] + h <= upper_[i];
       const bool minus_inside = xc[i] - h >= lower_[i];
-      double hp = 0, hm = 0;
+      Plan& p = plans[i];
       if (settings_.central_differences && plus_inside && minus_inside) {
-        hp = take(i, h, plus);
-        hm = take(i, -h, minus);
+        p.first = h;
+        p.second = -h;
       } else if (plus_inside || minus_inside) {
         // Forward difference, flipped inward at the upper bound; if the
         // probe fails, the other side (when inside the box) is tried.
-        if (plus_inside) {
-          hp = take(i, h, plus);
-          if (hp == 0 && minus_inside) hm = take(i, -h, minus);
-        } else {
-          hm = take(i, -h, minus);
-          if (hm == 0 && plus_inside) hp = take(i, h, plus);
-        }
+        p.first = plus_inside ? h : -h;
+        if (plus_inside && minus_inside) p.fallback = -p.first;
       } else if (upper_[i] - xc[i] >= xc[i] - lower_[i]) {
         // Rounding left neither side a full step: go to the farther bound
         // (at least half the range away).
-        hp = take(i, upper_[i] - xc[i], plus);
+        p.first = upper_[i] - xc[i];
       } else {
-        hm = take(i, lower_[i] - xc[i], minus);
+        p.first = lower_[i] - xc[i];
       }
+    }
+    // The probe point of step s in variable i, and the step actually taken
+    // (after rounding and clamping; 0 = no move, no information).
+    auto probe_at = [&](std::size_t i, double s, double& actual) {
+      std::vector<double> probe = xc;
+      probe[i] = std::clamp(xc[i] + s, lower_[i], upper_[i]);
+      actual = probe[i] - xc[i];
+      return probe;
+    };
+    struct Probe {
+      std::size_t variable;
+      double actual;
+      std::vector<double> values;
+      bool ok = false;
+    };
+    auto run_batch = [&](const std::vector<std::pair<std::size_t, double>>& steps) {
+      std::vector<Probe> probes;
+      std::vector<std::vector<double>> points;
+      for (const auto& [i, s] : steps) {
+        double actual = 0;
+        std::vector<double> p = probe_at(i, s, actual);
+        probes.push_back({i, actual, {}, false});
+        if (actual != 0.0) points.push_back(std::move(p));
+      }
+      const std::vector<Evaluation> es = at_batch(points, true);
+      std::size_t next = 0;
+      for (Probe& p : probes)
+        if (p.actual != 0.0) p.ok = stacked(es[next++], p.values);
+      return probes;
+    };
+    std::vector<std::pair<std::size_t, double>> first_steps;
+    for (std::size_t i = 0; i < n_; ++i) {
+      first_steps.emplace_back(i, plans[i].first);
+      if (plans[i].second != 0) first_steps.emplace_back(i, plans[i].second);
+    }
+    std::vector<Probe> probes = run_batch(first_steps);
+    std::vector<std::pair<std::size_t, double>> fallback_steps;
+    for (const Probe& p : probes)
+      if (!p.ok && plans[p.variable].fallback != 0) fallback_steps.emplace_back(p.variable, plans[p.variable].fallback);
+    if (!fallback_steps.empty()) {
+      std::vector<Probe> more = run_batch(fallback_steps);
+      probes.insert(probes.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    }
+    // Per variable: the successful probe on each side (the first one kept).
+    std::vector<const Probe*> plus_side(n_, nullptr), minus_side(n_, nullptr);
+    for (const Probe& p : probes) {
+      if (!p.ok) continue;
+      auto& slot = p.actual > 0 ? plus_side[p.variable] : minus_side[p.variable];
+      if (!slot) slot = &p;
+    }
+    for (std::size_t i = 0; i < n_; ++i) {
+      const Probe* hp = plus_side[i];
+      const Probe* hm = minus_side[i];
       for (std::size_t r = 0; r < rows; ++r) {
         double d = 0.0;  // both sides failed: no information, report a flat slope
-        if (hp != 0 && hm != 0) d = (plus[r] - minus[r]) / (hp - hm);
-        else if (hp != 0) d = (plus[r] - center[r]) / hp;
-        else if (hm != 0) d = (minus[r] - center[r]) / hm;
+        if (hp && hm) d = (hp->values[r] - hm->values[r]) / (hp->actual - hm->actual);
+        else if (hp) d = (hp->values[r] - center[r]) / hp->actual;
+        else if (hm) d = (hm->values[r] - center[r]) / hm->actual;
         jac.values[r * n_ + i] = d;
       }
     }

@@ -89,11 +89,21 @@ class EvaluationTracker {
   // request ends the run; lets anything evaluate() or the observer threw
   // pass unchanged.
   Evaluation at(const double* x, bool gradient_probe = false);
+  // The same for independent points, result i for xs[i]: the memo answers
+  // what it holds, the new distinct points go to Problem::evaluate_batch in
+  // one call, and each is then recorded and reported to the observer in the
+  // order of `xs` (so the record does not depend on who evaluates them).
+  // Every point counts as a request; the stop request and the clock are
+  // polled once per batch. When the budget has room for only part of the new
+  // points, that part is evaluated and recorded, then RunHalted is thrown.
+  std::vector<Evaluation> at_batch(const std::vector<std::vector<double>>& xs, bool gradient_probe = false);
   // Points asked for so far (memo hits included), over the whole run.
   std::size_t point_requests() const { return requests_; }
 
-  // Finite-difference Jacobian at x (see Jacobian); probes go through at()
-  // with gradient_probe = true. Cached for the last center.
+  // Finite-difference Jacobian at x (see Jacobian); the probes go through
+  // at_batch() with gradient_probe = true: one batch of every variable's
+  // probes, then one of the other sides of the forward probes that failed.
+  // Cached for the last center.
   const Jacobian& jacobian(const double* x);
 
   // Values handed to a solver in place of a failed evaluation: worse than

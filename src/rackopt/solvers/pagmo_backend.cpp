@@ -30,6 +30,7 @@
 #include <pagmo/algorithms/moead.hpp>
 #include <pagmo/algorithms/nsga2.hpp>
 #include <pagmo/algorithms/sade.hpp>
+#include <pagmo/bfe.hpp>
 #include <pagmo/population.hpp>
 #include <pagmo/problem.hpp>
 
@@ -60,8 +61,15 @@ struct PenalizedProblem {
   std::size_t objectives = 1;
   double tolerance = 0;
 
-  pagmo::vector_double fitness(const pagmo::vector_double& x) const {
-    const Evaluation e = tracker->at(x.data());
+  pagmo::vector_double fitness(const pagmo::vector_double& x) const { return penalized(tracker->at(x.data())); }
+  // Many designs at once (the tracker hands them to Problem::evaluate_batch),
+  // fitness vectors in the order of `xs`.
+  std::vector<pagmo::vector_double> batch_fitness(const std::vector<std::vector<double>>& xs) const {
+    std::vector<pagmo::vector_double> out;
+    for (const Evaluation& e : tracker->at_batch(xs)) out.push_back(penalized(e));
+    return out;
+  }
+  pagmo::vector_double penalized(const Evaluation& e) const {
     if (!e.ok()) return pagmo::vector_double(objectives, kFailedValue);
     const double v = max_violation(e);
     if (v > tolerance) return pagmo::vector_double(objectives, kInfeasibleBase + std::min(v, kMaxViolationShown));
@@ -72,6 +80,24 @@ struct PenalizedProblem {
   }
   pagmo::vector_double::size_type get_nobj() const { return objectives; }
   std::string get_name() const { return "rackopt penalized problem"; }
+};
+
+// pagmo's batch fitness evaluator for NSGA-II: a generation's offspring go
+// to the tracker as one batch (flattened decision vectors in, flattened
+// fitness vectors out, as pagmo's bfe contract says).
+struct TrackerBatchEvaluator {
+  pagmo::vector_double operator()(const pagmo::problem& p, const pagmo::vector_double& dvs) const {
+    const PenalizedProblem* udp = p.extract<PenalizedProblem>();
+    if (!udp) throw std::logic_error("the pagmo batch evaluator serves the penalized rackopt problem only");
+    const std::size_t n = p.get_nx();
+    std::vector<std::vector<double>> xs;
+    for (std::size_t k = 0; k + n <= dvs.size(); k += n)
+      xs.emplace_back(dvs.begin() + static_cast<std::ptrdiff_t>(k), dvs.begin() + static_cast<std::ptrdiff_t>(k + n));
+    pagmo::vector_double out;
+    for (const auto& f : udp->batch_fitness(xs)) out.insert(out.end(), f.begin(), f.end());
+    return out;
+  }
+  std::string get_name() const { return "rackopt evaluation tracker"; }
 };
 
 enum class Method { kNsga2, kMoead, kCmaes, kSade };
@@ -139,8 +165,11 @@ pagmo::algorithm make_algorithm(const SolverBackend& backend, const SolverSettin
   const double mutation = backend.option(settings, "mutation_probability");
   const double pm = mutation > 0 ? mutation : 1.0 / static_cast<double>(std::max<std::size_t>(1, dimension));
   switch (m.method) {
-    case Method::kNsga2:
-      return pagmo::algorithm(pagmo::nsga2(1u, backend.option(settings, "crossover_probability"), 10.0, pm, 20.0, seed));
+    case Method::kNsga2: {
+      pagmo::nsga2 nsga2(1u, backend.option(settings, "crossover_probability"), 10.0, pm, 20.0, seed);
+      nsga2.set_bfe(pagmo::bfe(TrackerBatchEvaluator{}));
+      return pagmo::algorithm(nsga2);
+    }
     case Method::kMoead: {
       const auto neighbours = static_cast<pagmo::population::size_type>(
           std::min<double>(backend.option(settings, "neighbours"), static_cast<double>(population - 1)));
@@ -183,7 +212,9 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
   // guard: a halt (budget, time, stop request) ends the run with every
   // evaluation kept by the tracker; anything else is rethrown by the caller.
   tracker.guard([&] {
-    for (const auto& x : first) pop.push_back(x);
+    // The first population as one batch.
+    const std::vector<pagmo::vector_double> first_f = udp.batch_fitness(first);
+    for (std::size_t k = 0; k < first.size(); ++k) pop.push_back(first[k], first_f[k]);
     pagmo::algorithm algo = make_algorithm(backend, settings, m, tracker.dimension(), population);
     const auto stall = static_cast<std::size_t>(backend.option(settings, "stall_generations"));
     double best = std::numeric_limits<double>::infinity();

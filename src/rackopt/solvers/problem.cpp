@@ -22,4 +22,11 @@ std::vector<std::string> Problem::variable_names() const {
   return names;
 }
 
+std::vector<Evaluation> Problem::evaluate_batch(const std::vector<std::vector<double>>& xs) const {
+  std::vector<Evaluation> out;
+  out.reserve(xs.size());
+  for (const auto& x : xs) out.push_back(evaluate(std::span<const double>(x)));
+  return out;
+}
+
 }  // namespace rackopt::solvers

@@ -62,6 +62,13 @@ class Problem {
   // carried out of the solver by the adapter (never swallowed, never
   // crossing a C callback frame).
   virtual Evaluation evaluate(std::span<const double> x) const = 0;
+
+  // Evaluates independent designs, result i for xs[i]: what evaluate(xs[i])
+  // gives, for every i, whatever executes them (threads, MPI ranks). The
+  // adapters hand a batch whenever the points do not depend on each other
+  // (finite-difference probes, a population's generation). The default calls
+  // evaluate() in order; a Problem that owns an executor overrides it.
+  virtual std::vector<Evaluation> evaluate_batch(const std::vector<std::vector<double>>& xs) const;
 };
 
 // Called by adapters after every evaluation they make (including the ones

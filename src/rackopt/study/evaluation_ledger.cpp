@@ -24,7 +24,11 @@ std::string bits_key(std::span<const double> x) {
 }
 
 EvaluationLedger::EvaluationLedger(const StudySpec& spec, const RunOptions& options, StudyProblem& base)
-    : spec_(spec), options_(options), base_(base), threads_(resolve_threads(options.threads)) {}
+    : spec_(spec),
+      options_(options),
+      base_(base),
+      threads_(resolve_threads(options.threads)),
+      executor_(options.executor ? options.executor : std::shared_ptr<DesignExecutor>(make_thread_executor(threads_))) {}
 
 void EvaluationLedger::open_store(const std::string& path) {
   record::StoreOptions store_options;
@@ -83,8 +87,29 @@ std::optional<DesignEvaluation> EvaluationLedger::recorded(std::span<const doubl
 }
 
 Obtained EvaluationLedger::obtain(const StudyProblem& p, std::span<const double> x) {
-  if (auto o = lookup(x)) return std::move(*o);
-  return Obtained{p.evaluate_design(x, threads_), Origin::kNew};
+  return std::move(obtain_batch(p, {std::vector<double>(x.begin(), x.end())}).front());
+}
+
+std::vector<Obtained> EvaluationLedger::obtain_batch(const StudyProblem& p,
+                                                     const std::vector<std::vector<double>>& xs) {
+  std::vector<std::optional<Obtained>> got(xs.size());
+  std::vector<std::vector<double>> missing;
+  std::vector<std::size_t> where;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    got[k] = lookup(xs[k]);
+    if (!got[k]) {
+      missing.push_back(xs[k]);
+      where.push_back(k);
+    }
+  }
+  if (!missing.empty()) {
+    std::vector<DesignEvaluation> fresh = executor_->evaluate(p, missing, threads_);
+    for (std::size_t j = 0; j < where.size(); ++j) got[where[j]] = Obtained{std::move(fresh[j]), Origin::kNew};
+  }
+  std::vector<Obtained> out;
+  out.reserve(xs.size());
+  for (auto& o : got) out.push_back(std::move(*o));
+  return out;
 }
 
 void EvaluationLedger::settle(const Obtained& o, const std::string& label, bool gradient_probe, bool ranks) {

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/design_executor.hpp"
 #include "rackopt/study/study_problem.hpp"
 #include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_runner.hpp"
@@ -68,6 +70,10 @@ class EvaluationLedger {
   std::optional<DesignEvaluation> recorded(std::span<const double> x) const;
   // From the store, else evaluated now (not yet recorded: settle does that).
   Obtained obtain(const StudyProblem& p, std::span<const double> x);
+  // The same for independent designs, result i for xs[i]: store lookups in
+  // order on this thread, the rest in one batch on the executor.
+  std::vector<Obtained> obtain_batch(const StudyProblem& p, const std::vector<std::vector<double>>& xs);
+  DesignExecutor& executor() { return *executor_; }
 
   // Records (when new) and counts (unless a repeat) one design; `ranks`
   // false keeps it out of best / least infeasible (a sweep's start design).
@@ -102,6 +108,7 @@ class EvaluationLedger {
   const RunOptions& options_;
   StudyProblem& base_;
   unsigned threads_;
+  std::shared_ptr<DesignExecutor> executor_;
   std::optional<record::EvaluationStore> store_;
   std::int64_t preexisting_rows_ = 0;
   std::set<std::int64_t> counted_rows_;

@@ -1,8 +1,9 @@
 // The Problem handed to the solvers in an optimize or pareto study: a
 // StudyProblem whose evaluations go through the evaluation ledger (taken
-// from the store on --resume) and are recorded when the solver adapter
-// reports them, since only then is it known whether a point was a
-// finite-difference probe. Used on the driving thread only.
+// from the store on --resume; batches on the ledger's executor) and are
+// recorded when the solver adapter reports them, since only then is it
+// known whether a point was a finite-difference probe. Used on the driving
+// thread only.
 #pragma once
 
 #include <optional>
@@ -33,13 +34,14 @@ class RecordedProblem final : public solvers::Problem {
   std::size_t num_equality() const override { return problem_.num_equality(); }
 
   solvers::Evaluation evaluate(std::span<const double> u) const override;
+  std::vector<solvers::Evaluation> evaluate_batch(const std::vector<std::vector<double>>& us) const override;
 
   // The adapter's report of the evaluation just made; `sub_label` names the
   // sub-problem of a Pareto front ("anchor 1", "eps 3"), empty otherwise.
   void observed(const solvers::EvaluationRecord& rec, const std::string& sub_label) const;
 
-  // An evaluation the adapter made but did not report (it stopped): still
-  // recorded, so nothing computed is lost.
+  // Evaluations the adapter made but did not report (it stopped): still
+  // recorded, in evaluation order, so nothing computed is lost.
   void settle_pending() const;
 
  private:
@@ -50,7 +52,8 @@ class RecordedProblem final : public solvers::Problem {
   EvaluationLedger& ledger_;
   const StudyProblem& problem_;
   std::string label_;
-  mutable std::optional<Pending> pending_;
+  // Evaluated, not yet reported: at most one batch, in evaluation order.
+  mutable std::vector<Pending> pending_;
 };
 
 }  // namespace rackopt::study

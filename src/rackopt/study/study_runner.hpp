@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rackopt/fe/fe_comparison.hpp"
+#include "rackopt/study/design_executor.hpp"
 #include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_spec.hpp"
 
@@ -30,6 +31,10 @@ struct RunOptions {
   std::function<bool()> stop;           // polled between evaluations and by the Monte Carlo of a reliability
                                         // study (from its worker threads: must be thread-safe); true = stop cleanly (Ctrl-C)
   fe::FeCalls fe_calls;                 // `verify: fe`: the FE solves (empty members = the real ones; tests inject fakes)
+  // Who evaluates batches of designs (design_executor.hpp); empty = this
+  // process's `threads`. An MPI job passes its rank executor. Results do not
+  // depend on it.
+  std::shared_ptr<DesignExecutor> executor;
 };
 
 // Runs the study; at the end writes <out>/evaluations.csv from the store

@@ -4,24 +4,11 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "rackopt/core/parallel_for.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 
 namespace rackopt::study {
-
-namespace {
-
-// Evaluates designs in parallel; results by index. Exceptions (bugs, store
-// errors are not possible here) are carried to the calling thread.
-void evaluate_parallel(const StudyProblem& p, const std::vector<std::vector<double>>& xs,
-                       const std::vector<std::size_t>& which, std::vector<std::optional<DesignEvaluation>>& out,
-                       unsigned threads) {
-  parallel_for(which.size(), threads, [&](std::size_t k) { out[which[k]] = p.evaluate_design(xs[which[k]], 1); });
-}
-
-}  // namespace
 
 std::vector<std::vector<double>> sweep_points(const StudySpec& spec) {
   const auto& vars = spec.variables;
@@ -70,7 +57,7 @@ StudyStatus drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
   const std::size_t n_obj = spec.objectives.size();
   StudyStatus status = StudyStatus::kOk;
   ledger.set_phase("sweep");
-  const std::size_t chunk = std::max<std::size_t>(8, 8 * static_cast<std::size_t>(ledger.threads()));
+  const std::size_t chunk = std::max<std::size_t>(8, 8 * static_cast<std::size_t>(ledger.executor().workers()));
   for (std::size_t begin = 0; begin < points.size(); begin += chunk) {
     if (ledger.stop_requested()) break;
     const std::size_t end = std::min(points.size(), begin + chunk);
@@ -95,7 +82,13 @@ StudyStatus drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
       got[k] = ledger.lookup(xs[k]);
       if (!got[k]) misses.push_back(k);
     }
-    evaluate_parallel(base, xs, misses, fresh, ledger.threads());
+    // The misses on the ledger's executor (threads or MPI ranks).
+    std::vector<std::vector<double>> miss_xs;
+    for (std::size_t k : misses) miss_xs.push_back(xs[k]);
+    if (!miss_xs.empty()) {
+      std::vector<DesignEvaluation> computed = ledger.executor().evaluate(base, miss_xs, ledger.threads());
+      for (std::size_t j = 0; j < misses.size(); ++j) fresh[misses[j]] = std::move(computed[j]);
+    }
     for (std::size_t k = 0; k < n; ++k) {
       const std::string label = "sweep " + std::to_string(begin + k);
       const std::size_t j = duplicate_of[k] != SIZE_MAX ? duplicate_of[k] : k;
