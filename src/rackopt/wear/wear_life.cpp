@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -181,6 +182,35 @@ struct WearModel::Impl {
   std::array<HardnessIntegral, 2> G;
   std::array<double, 2> limit{};          // failure depth per member [m]
   std::array<bool, 2> limit_is_case{};
+
+  // The start of every life without a sampled contact ratio: the nominal
+  // path with its load nodes and compliances (independent of the force), and
+  // its unworn load sharing and band weights at the drive's own force. They
+  // depend on the design only, so a model builds them once, on first use
+  // (std::call_once: life() is called from several threads at once), and a
+  // sample that scales only K or the hardness starts from them as they are;
+  // one that scales the force reuses the path and redoes the rest. Built by
+  // the same code as a sample's own start, so the lives are bit-identical
+  // (WearOptions::reuse_nominal_start off rebuilds them per life, for tests).
+  struct NominalStart {
+    Path path;        // before the load sharing (make_path)
+    Path weighted;    // the same with the band weights at the drive's force
+    std::vector<double> margin;  // unworn signed pair margins at that force (solve)
+  };
+  mutable std::once_flag nominal_once;
+  mutable std::optional<NominalStart> nominal_start_;
+  const NominalStart& nominal_start() const {
+    std::call_once(nominal_once, [this] {
+      NominalStart ns;
+      ns.path = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+      ns.weighted = ns.path;
+      const std::vector<double> zero(ns.path.N, 0.0);
+      solve(ns.weighted, zero, zero, force, ns.margin);
+      build_weights(ns.weighted, ns.margin);
+      nominal_start_.emplace(std::move(ns));
+    });
+    return *nominal_start_;
+  }
 
   Impl(const Drive& d, WearOptions o)
       : drive(d),
@@ -704,7 +734,9 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   res.initial_contact_ratio = res.final_contact_ratio = eps0;
   if (!ok) {
     res.reason = why;
-    const Path p = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+    const Path local =
+        opt.reuse_nominal_start ? Path{} : make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+    const Path& p = opt.reuse_nominal_start ? nominal_start().path : local;
     const std::vector<double> zero(p.N, 0.0);
     res.pinion = profile(p, kPinion, zero);
     res.rack = profile(p, kRack, zero);
@@ -713,13 +745,24 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     return res;
   }
 
-  Path p = make_path(s_start, eps0, clearance);
+  // The unworn start: the path, its load sharing at F and the band weights
+  // (NominalStart: from the model's own when the path is the nominal one).
+  const bool nominal_path = !smp.contact_ratio && opt.reuse_nominal_start;
+  const bool nominal_force = smp.force_scale == 1;
+  Path local;
+  std::vector<double> margin;
+  if (nominal_path && nominal_force) {
+    margin = nominal_start().margin;
+  } else {
+    local = nominal_path ? nominal_start().path : make_path(s_start, eps0, clearance);
+    const std::vector<double> zero(local.N, 0.0);
+    solve(local, zero, zero, F, margin);
+    build_weights(local, margin);
+  }
+  const Path& p = nominal_path && nominal_force ? nominal_start().weighted : local;
   const int N = p.N;
   std::array<std::vector<double>, 2> h{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
   std::array<std::vector<double>, 2> g = h;  // G(h) per point (model hardness units)
-  std::vector<double> margin;
-  solve(p, h[kPinion], h[kRack], F, margin);
-  build_weights(p, margin);
   long solves = 1;
   const bool update = drive.wear.update_profile;
   const double f_blk = drive.wear.block_fraction;
