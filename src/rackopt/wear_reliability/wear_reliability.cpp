@@ -158,11 +158,34 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     dist.push_back(input_distribution(in, design_value(drive, in.key, model.nominal_contact_ratio())));
     out.input_keys.push_back(in.key);
   }
-  const std::size_t n = static_cast<std::size_t>(opt.samples.value_or(spec.samples));
-  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed.value_or(static_cast<long>(spec.seed)));
   const std::size_t dim = inputs.size();
-  const statistics::PointSet points = spec.sobol ? statistics::sobol_points(n, dim, true, seed)
-                                                  : statistics::pseudo_random_points(n, dim, seed);
+  // One input, in the probabilities of its quantiles:
+  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
+  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
+  //    summary: R(t) and the life at R are conditional on a valid sample.
+  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
+  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
+  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
+  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
+  double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
+  const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
+  if (positive_input) {
+    v0 = std::clamp(dist[0].cdf(0.0), 0.0, 1.0);
+    qa = v0;
+  } else if (dim == 1 && inputs[0].key == "contact_ratio") {
+    xa = std::max(1.0, drive.wear.min_contact_ratio);
+    xb = model.max_contact_ratio();
+    qa = dist[0].cdf(xa);
+    qb = std::max(qa, dist[0].cdf(xb));
+  }
+  const double valid_probability = 1.0 - v0;
+  // The exact results alone are wanted and they exist: no samples.
+  const bool skip_samples = opt.exact_only && dim == 1 && valid_probability > 0;
+  const std::size_t n = skip_samples ? 0 : static_cast<std::size_t>(opt.samples.value_or(spec.samples));
+  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed.value_or(static_cast<long>(spec.seed)));
+  const statistics::PointSet points = skip_samples    ? statistics::PointSet{}
+                                      : spec.sobol    ? statistics::sobol_points(n, dim, true, seed)
+                                                      : statistics::pseudo_random_points(n, dim, seed);
   out.input_values.assign(n, std::vector<double>(dim));
   // Values outside their input's domain (wear_reliability/sample_domain.hpp): the sample
   // is not evaluated but recorded as a failed evaluation with this reason.
@@ -190,26 +213,6 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
 
-  // One input, in the probabilities of its quantiles:
-  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
-  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
-  //    summary: R(t) and the life at R are conditional on a valid sample.
-  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
-  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
-  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
-  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
-  double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
-  const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
-  if (positive_input) {
-    v0 = std::clamp(dist[0].cdf(0.0), 0.0, 1.0);
-    qa = v0;
-  } else if (dim == 1 && inputs[0].key == "contact_ratio") {
-    xa = std::max(1.0, drive.wear.min_contact_ratio);
-    xb = model.max_contact_ratio();
-    qa = dist[0].cdf(xa);
-    qb = std::max(qa, dist[0].cdf(xb));
-  }
-  const double valid_probability = 1.0 - v0;
 
   // The life table (one input): nodes over the [1e-9, 1 - 1e-9] quantiles
   // of the input (clipped to [xa, xb]), so that it serves the samples and the
@@ -410,7 +413,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   out.exact_ms = ms_since(t_exact);
   out.fit_ms = ms_since(t0);
 
-  failed_sample_warnings(drive, model, out);
+  if (!skip_samples) failed_sample_warnings(drive, model, out);  // else nothing was sampled: no status
 
   const double nominal_years = out.nominal.life_years;
   for (std::size_t k = 0; k < out.exact.life_at_R_years.size() && k < spec.reliabilities.size(); ++k) {

@@ -55,6 +55,13 @@ struct WearReliabilityOptions {
   int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
   int life_table_max_evaluations = 96;    // model lives the table may use
+  // For a caller that reads only the exact results (the wear_life_at_R
+  // metric's exact path): when the exact quantile map is available (one
+  // random input with a valid value of positive probability), no Monte Carlo
+  // sample is drawn: lives, input_values, criteria and summary stay empty,
+  // status is nullopt and samples_used 0. Otherwise (several inputs, or no
+  // valid value) the samples are drawn as usual.
+  bool exact_only = false;
 };
 
 // The options a problem asks for: bootstrap_replicates, life_table and
@@ -117,7 +124,7 @@ struct WearReliabilityResult {
   // Per input: samples whose value lies outside the input's domain
   // (wear_reliability/sample_domain.hpp); those samples are failed evaluations.
   std::vector<std::size_t> outside_domain_samples;
-  // nullopt without random inputs (nothing sampled).
+  // nullopt when nothing was sampled (no random inputs, or exact_only).
   std::optional<SamplingStatus> status;
   statistics::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
   ExactReliability exact;
