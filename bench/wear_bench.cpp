@@ -37,8 +37,11 @@ rackopt::Drive ship_lift_with(long points, long update) {
   return d;
 }
 
-// One deterministic life of the nominal drive, model built once (what a
-// Monte Carlo sample pays).
+// One deterministic life of the nominal drive, model built once. The model
+// builds the nominal start (path, unworn load sharing, band weights) on its
+// first life only, so this is what a sample that leaves the contact ratio
+// and the load alone pays (wear coefficient, hardness); a sample with its
+// own contact ratio pays BM_WearLifeSampledContactRatio.
 void BM_WearLife(benchmark::State& state) {
   const rackopt::WearModel model(ship_lift_with(state.range(0), state.range(1)));
   rackopt::WearLifeResult r;
