@@ -50,7 +50,11 @@ struct WearReliabilityOptions {
   // One random input: the lives of the samples and the exact quantile map
   // come from a verified table of life(input) (statistics/function_table.hpp)
   // instead of one model life per sample (docs/models/reliability.md, "Life
-  // table"). false = one direct life per sample and R(t) by bisection.
+  // table"). Several inputs of which at most one is the contact ratio or the
+  // load: the table along that input (or the nominal life) times each
+  // sample's exact factor for the wear coefficient and the hardness
+  // (wear_reliability/life_scaling.hpp). false = one direct life per sample
+  // and R(t) by bisection.
   bool life_table = true;
   int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
@@ -70,10 +74,17 @@ struct WearReliabilityOptions {
 // study sets.
 WearReliabilityOptions wear_reliability_options(const Drive& drive);
 
-// How the one-input life table was used (empty when it was not).
+// How the life table was used (empty when it was not): over the one random
+// input, or over the one input that shapes the life when every other input
+// scales it exactly (wear_reliability/life_scaling.hpp).
 struct LifeTableReport {
   bool used = false;
-  std::string not_used;            // why not (several inputs, option off, model error, ...)
+  std::string not_used;            // why not (several shaping inputs, option off, model error, ...)
+  std::string input;               // the tabulated input's key
+  // Several inputs: those applied to each sample as the exact factor on the
+  // table's life, or on the nominal life when no input shapes it (then
+  // used = false and samples_interpolated counts those samples).
+  std::vector<std::string> scaling_inputs;
   double x_min = 0, x_max = 0;     // tabulated input range (SI): the [1e-9, 1 - 1e-9] quantiles
                                    // clipped to the inputs that do not fail at once
   int nodes = 0;
