@@ -75,8 +75,12 @@ void band_weights(const std::vector<double>& node_c, const LoadIntervals& interv
     std::size_t k = first_segment_not(iv.size() - 1, [&](std::size_t j) { return (node_c[iv[j + 1]] - c) / L <= -1; });
     // F0, F1 at the previous segment's upper end are reused (asin is the cost).
     double prev_u = std::nan(""), prev_f0 = 0, prev_f1 = 0;
+    // A segment's lower u is the previous one's upper u (the same expression
+    // of the same node): carried over, not divided again.
+    double ub = (node_c[iv[k]] - c) / L;
     for (; k + 1 < iv.size(); ++k) {
-      const double ua = (node_c[iv[k]] - c) / L, ub = (node_c[iv[k + 1]] - c) / L;
+      const double ua = ub;
+      ub = (node_c[iv[k + 1]] - c) / L;
       if (ua >= 1) break;  // this and every later segment lie above the band
       if (!(ub > ua) || ub <= -1) continue;
       const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);

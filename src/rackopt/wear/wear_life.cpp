@@ -541,8 +541,12 @@ struct WearModel::Impl {
       auto& idx = p.w_idx[mb];
       auto& val = p.w_val[mb];
       beg.assign(1, 0);
+      beg.reserve(p.N + 1);
       idx.clear();
       val.clear();
+      // A band spans a few tens of nodes: room for that without regrowing.
+      idx.reserve(64 * static_cast<std::size_t>(p.N));
+      val.reserve(64 * static_cast<std::size_t>(p.N));
       for (int i = 0; i < p.N; ++i) {
         const double c = p.s[i];
         bool done = false;
