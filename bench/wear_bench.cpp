@@ -1,6 +1,6 @@
 // Benchmarks of the wear life and of the wear life at reliability R (targets:
 // one deterministic life < 1 ms, life at R from 1000
-// samples < 100 ms, one core). docs/performance.md records the figures.
+// samples < 100 ms, one core, with one random input and with several). docs/performance.md records the figures.
 //   ./build/wear_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // The 10^4-sample runs without the table take ~10 s per iteration; skip them with
 //   --benchmark_filter=-'.*samples:10000.*'
@@ -37,8 +37,11 @@ rackopt::Drive ship_lift_with(long points, long update) {
   return d;
 }
 
-// One deterministic life of the nominal drive, model built once (what a
-// Monte Carlo sample pays).
+// One deterministic life of the nominal drive, model built once. The model
+// builds the nominal start (path, unworn load sharing, band weights) on its
+// first life only, so this is what a sample that leaves the contact ratio
+// and the load alone pays (wear coefficient, hardness); a sample with its
+// own contact ratio pays BM_WearLifeSampledContactRatio.
 void BM_WearLife(benchmark::State& state) {
   const rackopt::WearModel model(ship_lift_with(state.range(0), state.range(1)));
   rackopt::WearLifeResult r;
@@ -126,6 +129,57 @@ BENCHMARK(BM_LifeAtR)
     ->Args({1000, 60, 1, 100})
     ->Args({10000, 0, 1, 100})
     ->Args({10000, 0, 0, 200})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+// The life-at-R run with several random inputs, one thread, 1000 samples,
+// 100 bootstrap replicates, the file's 240 points. Arguments: inputs (0 =
+// contact ratio + wear coefficient, 1 = contact ratio + wear coefficient +
+// surface hardness, 2 = wear coefficient + surface hardness, 3 = contact
+// ratio + load), table (1 = the default: the table along the one input that
+// shapes the life times each sample's exact factor for the others,
+// wear_reliability/life_scaling.hpp; 0 = one model life per sample). With
+// inputs 3 both inputs shape the life: one model life per sample either way.
+void BM_LifeAtRSeveralInputs(benchmark::State& state) {
+  rackopt::Drive d = ship_lift();
+  auto relative_normal = [](const char* key, double cv) {
+    rackopt::RandomInput in;
+    in.key = key;
+    in.distribution = rackopt::RandomInput::Distribution::kNormal;
+    in.cv = cv;
+    return in;
+  };
+  const rackopt::RandomInput eps = d.reliability.inputs.at(0);  // the file's contact-ratio scatter
+  const rackopt::RandomInput k = relative_normal("wear.coefficient", 0.15);
+  const rackopt::RandomInput hardness = relative_normal("surface_hardness", 0.05);
+  const rackopt::RandomInput load = relative_normal("load", 0.05);
+  const long which = state.range(0);
+  d.reliability.inputs = which == 0   ? std::vector{eps, k}
+                         : which == 1 ? std::vector{eps, k, hardness}
+                         : which == 2 ? std::vector{k, hardness}
+                                      : std::vector{eps, load};
+  rackopt::WearReliabilityOptions opt{.samples = 1000, .seed = 1, .threads = 1};
+  opt.life_table = state.range(1) != 0;
+  double samples_ms = 0, fit_ms = 0, lives = 0;
+  for (auto _ : state) {
+    const rackopt::WearReliabilityResult r = rackopt::run_wear_reliability(d, opt);
+    benchmark::DoNotOptimize(r.summary.life.data());
+    samples_ms += r.samples_ms;
+    fit_ms += r.fit_ms;
+    lives += static_cast<double>(r.table.evaluations) + static_cast<double>(r.table.samples_direct) + 1;
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["samples_ms"] = samples_ms / n;
+  state.counters["fit_ms"] = fit_ms / n;
+  state.counters["lives"] = lives / n;
+}
+BENCHMARK(BM_LifeAtRSeveralInputs)
+    ->ArgNames({"inputs", "table"})
+    ->Args({0, 1})
+    ->Args({0, 0})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Args({3, 1})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 

@@ -235,8 +235,9 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
   // wear_life_at_R goes through run_wear_reliability, whose result also holds
   // the nominal life: one wear model serves wear_life and every R.
   //  * no random input: the deterministic life (reached with probability 1);
-  //  * one input (and exact_quantile): its exact quantile path, with one
-  //    Monte Carlo sample only (the sampled summary is not used);
+  //  * one input (and exact_quantile): its exact quantile path, without
+  //    Monte Carlo samples (exact_only; one sample when no exact path exists,
+  //    whose failure then names the cause);
   //  * otherwise: Monte Carlo with the fixed seed, the fitted life at R
   //    (empirical quantile when nothing could be fitted).
   const std::vector<RandomInput>& inputs = drive.reliability.inputs;
@@ -259,6 +260,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
       WearReliabilityOptions ro = wear_reliability_options(drive);
       if (exact) {
         ro.samples = 1;
+        ro.exact_only = true;
       } else if (o.reliability_samples) {
         ro.samples = *o.reliability_samples;
       }

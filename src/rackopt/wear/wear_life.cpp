@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 #include "rackopt/stiffness/hertz.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
 #include "rackopt/stiffness/pair_coupling.hpp"
+#include "rackopt/wear/band_weights.hpp"
 #include "rackopt/wear/contact.hpp"
 #include "rackopt/wear/hardness.hpp"
 
@@ -87,14 +89,6 @@ class HardnessIntegral {
   double D_ = 0, dh_ = 0;
   std::vector<double> H_, G_;
 };
-
-// Semicircle (elliptic pressure) weight integrals on [-1, 1]:
-// F0' = sqrt(1-u^2), F1' = u sqrt(1-u^2).
-double F0(double u) { return 0.5 * (u * std::sqrt(std::max(1.0 - u * u, 0.0)) + std::asin(u)); }
-double F1(double u) {
-  const double q = std::max(1.0 - u * u, 0.0);
-  return -q * std::sqrt(q) / 3.0;
-}
 
 // Everything of one realisation that stays fixed while it wears: the path,
 // the profile points, the sampled mesh positions with their pair compliances,
@@ -188,6 +182,35 @@ struct WearModel::Impl {
   std::array<HardnessIntegral, 2> G;
   std::array<double, 2> limit{};          // failure depth per member [m]
   std::array<bool, 2> limit_is_case{};
+
+  // The start of every life without a sampled contact ratio: the nominal
+  // path with its load nodes and compliances (independent of the force), and
+  // its unworn load sharing and band weights at the drive's own force. They
+  // depend on the design only, so a model builds them once, on first use
+  // (std::call_once: life() is called from several threads at once), and a
+  // sample that scales only K or the hardness starts from them as they are;
+  // one that scales the force reuses the path and redoes the rest. Built by
+  // the same code as a sample's own start, so the lives are bit-identical
+  // (WearOptions::reuse_nominal_start off rebuilds them per life, for tests).
+  struct NominalStart {
+    Path path;        // before the load sharing (make_path)
+    Path weighted;    // the same with the band weights at the drive's force
+    std::vector<double> margin;  // unworn signed pair margins at that force (solve)
+  };
+  mutable std::once_flag nominal_once;
+  mutable std::optional<NominalStart> nominal_start_;
+  const NominalStart& nominal_start() const {
+    std::call_once(nominal_once, [this] {
+      NominalStart ns;
+      ns.path = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+      ns.weighted = ns.path;
+      const std::vector<double> zero(ns.path.N, 0.0);
+      solve(ns.weighted, zero, zero, force, ns.margin);
+      build_weights(ns.weighted, ns.margin);
+      nominal_start_.emplace(std::move(ns));
+    });
+    return *nominal_start_;
+  }
 
   Impl(const Drive& d, WearOptions o)
       : drive(d),
@@ -481,6 +504,9 @@ struct WearModel::Impl {
     }
     std::sort(p.intervals.begin(), p.intervals.end(),
               [&](const std::vector<int>& x, const std::vector<int>& y) { return p.node_c[x.front()] < p.node_c[y.front()]; });
+    // The band weights' search relies on it (band_weights.hpp).
+    if (!load_intervals_sorted(p.node_c, p.intervals))
+      throw std::runtime_error("wear: load nodes out of order along the path (internal error)");
 
     const RackPinionSliding kin(sP, s_floor);
     p.slide[kPinion].resize(p.N);
@@ -492,89 +518,53 @@ struct WearModel::Impl {
     return p;
   }
 
-  // Pointwise weights: the load of the pair whose contact is at `c` (left
-  // limit at a zone transition, first/last node at the path ends).
-  static void pointwise_weights(const Path& p, double c, std::vector<int>& idx, std::vector<double>& val) {
-    for (const auto& iv : p.intervals) {
-      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
-        const double ca = p.node_c[iv[k]], cb = p.node_c[iv[k + 1]];
-        if (c >= ca && c <= cb && cb > ca) {
-          const double t = (c - ca) / (cb - ca);
-          idx.push_back(iv[k]);
-          val.push_back(1 - t);
-          idx.push_back(iv[k + 1]);
-          val.push_back(t);
-          return;
-        }
+  // Band-averaging weights of both members from the unworn pair loads P0
+  // (signed margins, solve). The band's half-width at a point is that of the
+  // unworn contact there (frozen while it wears; a depends on sqrt(w) only).
+  void build_weights(Path& p, const std::vector<double>& P0) const {
+    std::vector<double> half_width(p.N, 0.0);
+    if (opt.hertz_band) {
+      std::vector<int> pi;
+      std::vector<double> pv;
+      for (int i = 0; i < p.N; ++i) {
+        const double c = p.s[i];
+        pi.clear();
+        pv.clear();
+        pointwise_weights(p.node_c, p.intervals, c, pi, pv);
+        double w0 = 0;
+        for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
+        half_width[i] = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
       }
     }
-  }
-
-  // Elliptic-pressure weighted mean of the piecewise-linear pair load over
-  // the band [c - L, c + L] (L: Hertz half-width mapped onto the LOA). Zero
-  // load outside the path. Exact for the piecewise-linear load.
-  static void band_weights(const Path& p, double c, double L, std::vector<int>& idx, std::vector<double>& val) {
-    const double k2pi = 2.0 / M_PI;
-    const std::size_t first = idx.size();  // this point's weights start here
-    for (const auto& iv : p.intervals) {
-      if (p.node_c[iv.back()] <= c - L || p.node_c[iv.front()] >= c + L) continue;
-      // F0, F1 at the previous segment's upper end are reused (asin is the cost).
-      double prev_u = std::nan(""), prev_f0 = 0, prev_f1 = 0;
-      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
-        const double ua = (p.node_c[iv[k]] - c) / L, ub = (p.node_c[iv[k + 1]] - c) / L;
-        if (!(ub > ua) || ub <= -1 || ua >= 1) continue;
-        const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);
-        const double f0a = u1 == prev_u ? prev_f0 : F0(u1), f1a = u1 == prev_u ? prev_f1 : F1(u1);
-        prev_u = u2;
-        prev_f0 = F0(u2);
-        prev_f1 = F1(u2);
-        const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
-        const double du = ub - ua;
-        // The lower node is usually the previous segment's upper node: merge.
-        if (idx.size() > first && idx.back() == iv[k]) {
-          val.back() += k2pi * (ub * I0 - I1) / du;
-        } else {
-          idx.push_back(iv[k]);
-          val.push_back(k2pi * (ub * I0 - I1) / du);
-        }
-        idx.push_back(iv[k + 1]);
-        val.push_back(k2pi * (I1 - ua * I0) / du);
-      }
-    }
-  }
-
-  void build_weights(Path& p, const std::vector<double>& P0, double force_now) const {
-    (void)force_now;
     for (int mb = 0; mb < 2; ++mb) {
       auto& beg = p.w_begin[mb];
       auto& idx = p.w_idx[mb];
       auto& val = p.w_val[mb];
       beg.assign(1, 0);
+      beg.reserve(p.N + 1);
       idx.clear();
       val.clear();
+      // A band spans a few tens of nodes (2 without the band): room for that
+      // without regrowing (measured: 8 % of a weight build).
+      const std::size_t expect = (opt.hertz_band ? 64 : 2) * static_cast<std::size_t>(p.N);
+      idx.reserve(expect);
+      val.reserve(expect);
       for (int i = 0; i < p.N; ++i) {
         const double c = p.s[i];
         bool done = false;
         if (opt.hertz_band) {
-          // Band width of the unworn contact at this point (frozen while it
-          // wears; a depends on sqrt(w) only).
-          std::vector<int> pi;
-          std::vector<double> pv;
-          pointwise_weights(p, c, pi, pv);
-          double w0 = 0;
-          for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
-          const double a = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
+          const double a = half_width[i];
           // Surface distance per unit LOA: rack flank tan a0, pinion involute s/r_b.
           if (mb == kRack) {
             const double L = a / ta;
             if (L > 1e-12 * pb) {
-              band_weights(p, c, L, idx, val);
+              band_weights(p.node_c, p.intervals, c, L, idx, val);
               done = true;
             }
           } else if (a > 1e-12 * pb) {
             const InvoluteWindow win = involute_band_window(c, a, rb, sP);
             if (win.hi - win.lo > 2e-12 * pb) {
-              band_weights(p, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo), idx, val);
+              band_weights(p.node_c, p.intervals, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo), idx, val);
               const double thin = p.slide[kPinion][i];
               if (thin > 0) p.base_circle_window = std::min(p.base_circle_window, win.slide / thin);
               p.slide[kPinion][i] = win.slide;
@@ -582,7 +572,7 @@ struct WearModel::Impl {
             }
           }
         }
-        if (!done) pointwise_weights(p, c, idx, val);
+        if (!done) pointwise_weights(p.node_c, p.intervals, c, idx, val);
         beg.push_back(static_cast<int>(idx.size()));
       }
     }
@@ -750,7 +740,9 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   res.initial_contact_ratio = res.final_contact_ratio = eps0;
   if (!ok) {
     res.reason = why;
-    const Path p = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+    const Path local =
+        opt.reuse_nominal_start ? Path{} : make_path(s_start_nom, eps_nom, drive.mounting.clearance);
+    const Path& p = opt.reuse_nominal_start ? nominal_start().path : local;
     const std::vector<double> zero(p.N, 0.0);
     res.pinion = profile(p, kPinion, zero);
     res.rack = profile(p, kRack, zero);
@@ -759,13 +751,24 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     return res;
   }
 
-  Path p = make_path(s_start, eps0, clearance);
+  // The unworn start: the path, its load sharing at F and the band weights
+  // (NominalStart: from the model's own when the path is the nominal one).
+  const bool nominal_path = !smp.contact_ratio && opt.reuse_nominal_start;
+  const bool nominal_force = smp.force_scale == 1;
+  Path local;
+  std::vector<double> margin;
+  if (nominal_path && nominal_force) {
+    margin = nominal_start().margin;
+  } else {
+    local = nominal_path ? nominal_start().path : make_path(s_start, eps0, clearance);
+    const std::vector<double> zero(local.N, 0.0);
+    solve(local, zero, zero, F, margin);
+    build_weights(local, margin);
+  }
+  const Path& p = nominal_path && nominal_force ? nominal_start().weighted : local;
   const int N = p.N;
   std::array<std::vector<double>, 2> h{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
   std::array<std::vector<double>, 2> g = h;  // G(h) per point (model hardness units)
-  std::vector<double> margin;
-  solve(p, h[kPinion], h[kRack], F, margin);
-  build_weights(p, margin, F);
   long solves = 1;
   const bool update = drive.wear.update_profile;
   const double f_blk = drive.wear.block_fraction;
@@ -1001,7 +1004,7 @@ WearModel::PassWear WearModel::initial_wear_per_pass(const WearSample& smp) cons
   std::vector<double> zero(p.N, 0.0), margin;
   PassWear out;
   out.contact_ratio = m.solve(p, zero, zero, F, margin);
-  m.build_weights(p, margin, F);
+  m.build_weights(p, margin);
   std::array<std::vector<double>, 2> q;
   Impl::pass_loads(p, margin, q);
   std::array<std::vector<double>, 2> dh{std::vector<double>(p.N), std::vector<double>(p.N)};

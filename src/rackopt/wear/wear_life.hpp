@@ -101,6 +101,11 @@ struct WearOptions {
   // Mesh positions sampled per unit of path length, relative to the profile
   // point spacing (2 = twice as fine as the profile points).
   double positions_per_point = 2.0;
+  // Build the nominal path's start (path, unworn load sharing, band weights)
+  // once per model and start every life without a sampled contact ratio from
+  // it (true), or rebuild it for every life (false: the reference the tests
+  // compare the reuse with, bit for bit).
+  bool reuse_nominal_start = true;
 };
 
 class WearModel {
@@ -115,8 +120,9 @@ class WearModel {
   WearModel(WearModel&&) noexcept;
   WearModel& operator=(WearModel&&) noexcept;
 
-  // Wear life of one realisation. const, thread-safe (no shared mutable
-  // state) and deterministic. Throws InputError for a non-positive or
+  // Wear life of one realisation. const, thread-safe (the one shared mutable
+  // state, the nominal start built on first use, is built under
+  // std::call_once) and deterministic. Throws InputError for a non-positive or
   // non-finite scale or a non-finite contact ratio; every other outcome is a
   // finite result (contact ratio out of range: life 0 with the reason).
   WearLifeResult life(const WearSample& sample = {}) const;

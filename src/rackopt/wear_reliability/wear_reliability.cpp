@@ -14,6 +14,7 @@
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/wear_reliability/design_scatter.hpp"
+#include "rackopt/wear_reliability/life_scaling.hpp"
 #include "rackopt/wear_reliability/life_at_R_check.hpp"
 #include "rackopt/wear_reliability/sample_domain.hpp"
 #include "rackopt/statistics/distribution.hpp"
@@ -158,11 +159,43 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     dist.push_back(input_distribution(in, design_value(drive, in.key, model.nominal_contact_ratio())));
     out.input_keys.push_back(in.key);
   }
-  const std::size_t n = static_cast<std::size_t>(opt.samples.value_or(spec.samples));
-  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed.value_or(static_cast<long>(spec.seed)));
   const std::size_t dim = inputs.size();
-  const statistics::PointSet points = spec.sobol ? statistics::sobol_points(n, dim, true, seed)
-                                                  : statistics::pseudo_random_points(n, dim, seed);
+  // One input, in the probabilities of its quantiles:
+  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
+  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
+  //    summary: R(t) and the life at R are conditional on a valid sample.
+  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
+  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
+  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
+  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
+  struct InputBounds {
+    double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
+    bool positive = false;
+  };
+  auto bounds_of = [&](std::size_t k) {
+    InputBounds b;
+    b.positive = input_must_be_positive(inputs[k].key);
+    if (b.positive) {
+      b.v0 = std::clamp(dist[k].cdf(0.0), 0.0, 1.0);
+      b.qa = b.v0;
+    } else if (inputs[k].key == "contact_ratio") {
+      b.xa = std::max(1.0, drive.wear.min_contact_ratio);
+      b.xb = model.max_contact_ratio();
+      b.qa = dist[k].cdf(b.xa);
+      b.qb = std::max(b.qa, dist[k].cdf(b.xb));
+    }
+    return b;
+  };
+  const InputBounds one = dim == 1 ? bounds_of(0) : InputBounds{};
+  const double v0 = one.v0, qa = one.qa, qb = one.qb;
+  const double valid_probability = 1.0 - v0;
+  // The exact results alone are wanted and they exist: no samples.
+  const bool skip_samples = opt.exact_only && dim == 1 && valid_probability > 0;
+  const std::size_t n = skip_samples ? 0 : static_cast<std::size_t>(opt.samples.value_or(spec.samples));
+  const std::uint64_t seed = static_cast<std::uint64_t>(opt.seed.value_or(static_cast<long>(spec.seed)));
+  const statistics::PointSet points = skip_samples    ? statistics::PointSet{}
+                                      : spec.sobol    ? statistics::sobol_points(n, dim, true, seed)
+                                                      : statistics::pseudo_random_points(n, dim, seed);
   out.input_values.assign(n, std::vector<double>(dim));
   // Values outside their input's domain (wear_reliability/sample_domain.hpp): the sample
   // is not evaluated but recorded as a failed evaluation with this reason.
@@ -190,47 +223,50 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
 
   auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
 
-  // One input, in the probabilities of its quantiles:
-  //  [v0, 1]: the valid samples. A positive input's values <= 0 (probability
-  //    v0 = F(0)) are outside its domain and excluded, as in the Monte Carlo
-  //    summary: R(t) and the life at R are conditional on a valid sample.
-  //  [qa, qb] inside it: the inputs that do not fail at once. A sampled
-  //    contact ratio outside [max(1, [eps]), eps_max] fails at once (life 0):
-  //    R(t) and the life at R count it as failed at t = 0 (the ship-lift wear-reliability paper's
-  //    R = P([eps] <= eps <= eps_max)). qb >= qa even when [eps] > eps_max.
-  double v0 = 0.0, qa = 0.0, qb = 1.0, xa = -kInf, xb = kInf;
-  const bool positive_input = dim == 1 && input_must_be_positive(inputs[0].key);
-  if (positive_input) {
-    v0 = std::clamp(dist[0].cdf(0.0), 0.0, 1.0);
-    qa = v0;
-  } else if (dim == 1 && inputs[0].key == "contact_ratio") {
-    xa = std::max(1.0, drive.wear.min_contact_ratio);
-    xb = model.max_contact_ratio();
-    qa = dist[0].cdf(xa);
-    qb = std::max(qa, dist[0].cdf(xb));
-  }
-  const double valid_probability = 1.0 - v0;
 
-  // The life table (one input): nodes over the [1e-9, 1 - 1e-9] quantiles
-  // of the input (clipped to [xa, xb]), so that it serves the samples and the
-  // exact map and does not depend on the samples drawn.
+  // Several inputs of which at most one shapes the life (the contact ratio
+  // or the load): the others scale it exactly (life_scaling.hpp), so each
+  // sample is the life along that one input, from the table below, times its
+  // factor; with none, the nominal life times its factor.
+  std::size_t shaping = 0, ti = 0;  // inputs that shape the life; the tabulated input
+  for (std::size_t k = 0; k < dim; ++k) {
+    if (input_scales_life(inputs[k].key)) continue;
+    ++shaping;
+    ti = k;
+  }
+  const bool scaled = dim > 1 && shaping <= 1 && opt.life_table;
+  const bool scaled_nominal = scaled && shaping == 0;
+  const InputBounds tb = dim == 1 ? one : bounds_of(ti);
+  const std::vector<RandomInput> table_inputs{inputs[ti]};
+  auto table_life = [&](double x) { return model.life(wear_sample_for(drive, table_inputs, {x})); };
+
+  // The life table (one input, or the one shaping input): nodes over the
+  // [1e-9, 1 - 1e-9] quantiles of the input (clipped to [xa, xb]), so that it
+  // serves the samples and the exact map and does not depend on the samples
+  // drawn.
   t0 = std::chrono::steady_clock::now();
   std::optional<statistics::FunctionTable> table;
   LifeTableReport& tr = out.table;
-  if (dim != 1) {
-    tr.not_used = "several random inputs: one model life per sample";
-  } else if (!opt.life_table) {
+  if (scaled) {
+    for (std::size_t k = 0; k < dim; ++k)
+      if (input_scales_life(inputs[k].key)) tr.scaling_inputs.push_back(inputs[k].key);
+  }
+  if (!opt.life_table) {
     tr.not_used = "life_table option off";
+  } else if (dim != 1 && !scaled) {
+    tr.not_used = "several random inputs shape the life (contact_ratio and load): one model life per sample";
+  } else if (scaled_nominal) {
+    tr.not_used = "every random input scales the life: each sample is the nominal life times its factor";
   } else {
     constexpr double kTail = 1e-9;
     // A positive input's lowest node stays above 0 (the value at v0 is 0).
-    const double ql = std::max(qa, kTail) + (positive_input && v0 > 0 ? kTail : 0.0);
-    const double qh = std::min(qb, 1.0 - kTail);
+    const double ql = std::max(tb.qa, kTail) + (tb.positive && tb.v0 > 0 ? kTail : 0.0);
+    const double qh = std::min(tb.qb, 1.0 - kTail);
     // Quantiles only strictly inside (0, 1): a scatter wholly outside the
     // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
     const bool inside = qh > ql;
-    const double lo = inside ? std::max(xa, dist[0].quantile(ql)) : 0.0;
-    const double hi = inside ? std::min(xb, dist[0].quantile(qh)) : 0.0;
+    const double lo = inside ? std::max(tb.xa, dist[ti].quantile(ql)) : 0.0;
+    const double hi = inside ? std::min(tb.xb, dist[ti].quantile(qh)) : 0.0;
     if (!inside || !(hi > lo)) {
       tr.not_used = "almost every sample fails at once or lies outside the input's domain";
     } else {
@@ -242,7 +278,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       try {
         table = statistics::FunctionTable::build(
             [&](double x) {
-              const WearLifeResult r = life_of(x);
+              const WearLifeResult r = table_life(x);
               return statistics::TaggedValue{r.life_years, criterion_tag(r)};
             },
             lo, hi, to);
@@ -253,6 +289,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       }
       if (table) {
         tr.used = true;
+        tr.input = inputs[ti].key;
         tr.x_min = lo;
         tr.x_max = hi;
         tr.nodes = static_cast<int>(table->x().size());
@@ -270,11 +307,15 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     if (opt.progress) opt.progress->tick();
     if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
     double years;
-    const double x = out.input_values[i][0];
+    const double x = out.input_values[i][ti];
     if (table && table->covers(x)) {
       const statistics::TaggedValue v = *(*table)(x);
-      years = v.value;
+      years = scaled ? v.value * life_scale(wear_sample_for(drive, inputs, out.input_values[i])) : v.value;
       out.criteria[i] = criterion_of_tag(v.tag);  // each index written by one thread only
+      interpolated.fetch_add(1, std::memory_order_relaxed);
+    } else if (scaled_nominal) {
+      years = out.nominal.life_years * life_scale(wear_sample_for(drive, inputs, out.input_values[i]));
+      out.criteria[i] = out.nominal.criterion;
       interpolated.fetch_add(1, std::memory_order_relaxed);
     } else {
       const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]));
@@ -284,7 +325,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     return years * kSecondsPerYear;
   });
   if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
-  tr.samples_interpolated = table ? interpolated.load() : 0;
+  tr.samples_interpolated = table || scaled_nominal ? interpolated.load() : 0;
   tr.samples_direct = n - tr.samples_interpolated;
   out.samples_ms = ms_since(t0);
 
@@ -410,7 +451,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   out.exact_ms = ms_since(t_exact);
   out.fit_ms = ms_since(t0);
 
-  failed_sample_warnings(drive, model, out);
+  if (!skip_samples) failed_sample_warnings(drive, model, out);  // else nothing was sampled: no status
 
   const double nominal_years = out.nominal.life_years;
   for (std::size_t k = 0; k < out.exact.life_at_R_years.size() && k < spec.reliabilities.size(); ++k) {

@@ -50,11 +50,22 @@ struct WearReliabilityOptions {
   // One random input: the lives of the samples and the exact quantile map
   // come from a verified table of life(input) (statistics/function_table.hpp)
   // instead of one model life per sample (docs/models/reliability.md, "Life
-  // table"). false = one direct life per sample and R(t) by bisection.
+  // table"). Several inputs of which at most one is the contact ratio or the
+  // load: the table along that input (or the nominal life) times each
+  // sample's exact factor for the wear coefficient and the hardness
+  // (wear_reliability/life_scaling.hpp). false = one direct life per sample
+  // and R(t) by bisection.
   bool life_table = true;
   int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
   int life_table_max_evaluations = 96;    // model lives the table may use
+  // For a caller that reads only the exact results (the wear_life_at_R
+  // metric's exact path): when the exact quantile map is available (one
+  // random input with a valid value of positive probability), no Monte Carlo
+  // sample is drawn: lives, input_values, criteria and summary stay empty,
+  // status is nullopt and samples_used 0. Otherwise (several inputs, or no
+  // valid value) the samples are drawn as usual.
+  bool exact_only = false;
 };
 
 // The options a problem asks for: bootstrap_replicates, life_table and
@@ -63,10 +74,17 @@ struct WearReliabilityOptions {
 // study sets.
 WearReliabilityOptions wear_reliability_options(const Drive& drive);
 
-// How the one-input life table was used (empty when it was not).
+// How the life table was used (empty when it was not): over the one random
+// input, or over the one input that shapes the life when every other input
+// scales it exactly (wear_reliability/life_scaling.hpp).
 struct LifeTableReport {
   bool used = false;
-  std::string not_used;            // why not (several inputs, option off, model error, ...)
+  std::string not_used;            // why not (several shaping inputs, option off, model error, ...)
+  std::string input;               // the tabulated input's key
+  // Several inputs: those applied to each sample as the exact factor on the
+  // table's life, or on the nominal life when no input shapes it (then
+  // used = false and samples_interpolated counts those samples).
+  std::vector<std::string> scaling_inputs;
   double x_min = 0, x_max = 0;     // tabulated input range (SI): the [1e-9, 1 - 1e-9] quantiles
                                    // clipped to the inputs that do not fail at once
   int nodes = 0;
@@ -117,7 +135,7 @@ struct WearReliabilityResult {
   // Per input: samples whose value lies outside the input's domain
   // (wear_reliability/sample_domain.hpp); those samples are failed evaluations.
   std::vector<std::size_t> outside_domain_samples;
-  // nullopt without random inputs (nothing sampled).
+  // nullopt when nothing was sampled (no random inputs, or exact_only).
   std::optional<SamplingStatus> status;
   statistics::ReliabilitySummary summary;      // fits, R(t), life at R (seconds)
   ExactReliability exact;

@@ -1,0 +1,106 @@
+#include "rackopt/wear/band_weights.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace rackopt {
+namespace {
+
+// Semicircle (elliptic pressure) weight integrals on [-1, 1]:
+// F0' = sqrt(1-u^2), F1' = u sqrt(1-u^2).
+double F0(double u) { return 0.5 * (u * std::sqrt(std::max(1.0 - u * u, 0.0)) + std::asin(u)); }
+double F1(double u) {
+  const double q = std::max(1.0 - u * u, 0.0);
+  return -q * std::sqrt(q) / 3.0;
+}
+
+// The first segment k in [0, segments) for which `before(k)` is false, when
+// `before` holds on a prefix of the segments (binary search).
+template <class Before>
+std::size_t first_segment_not(std::size_t segments, Before before) {
+  std::size_t lo = 0, hi = segments;
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (before(mid)) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
+}
+
+}  // namespace
+
+bool load_intervals_sorted(const std::vector<double>& node_c, const LoadIntervals& intervals) {
+  for (const auto& iv : intervals)
+    for (std::size_t k = 0; k + 1 < iv.size(); ++k)
+      if (!(node_c[iv[k]] <= node_c[iv[k + 1]])) return false;
+  return true;
+}
+
+void pointwise_weights(const std::vector<double>& node_c, const LoadIntervals& intervals, double c,
+                       std::vector<int>& idx, std::vector<double>& val) {
+  for (const auto& iv : intervals) {
+    if (iv.size() < 2) continue;
+    // Segments that end before c cannot hold it; with non-decreasing nodes
+    // they are a prefix (and the test below is false on each of them).
+    std::size_t k = first_segment_not(iv.size() - 1, [&](std::size_t j) { return !(c <= node_c[iv[j + 1]]); });
+    for (; k + 1 < iv.size(); ++k) {
+      const double ca = node_c[iv[k]], cb = node_c[iv[k + 1]];
+      if (ca > c) break;  // this and every later segment start past c
+      if (c >= ca && c <= cb && cb > ca) {
+        const double t = (c - ca) / (cb - ca);
+        idx.push_back(iv[k]);
+        val.push_back(1 - t);
+        idx.push_back(iv[k + 1]);
+        val.push_back(t);
+        return;
+      }
+    }
+  }
+}
+
+void band_weights(const std::vector<double>& node_c, const LoadIntervals& intervals, double c, double L,
+                  std::vector<int>& idx, std::vector<double>& val) {
+  const double k2pi = 2.0 / M_PI;
+  const std::size_t first = idx.size();  // this point's weights start here
+  for (const auto& iv : intervals) {
+    if (iv.size() < 2) continue;  // no segment
+    if (node_c[iv.back()] <= c - L || node_c[iv.front()] >= c + L) continue;
+    // Segments wholly below the band (ub <= -1) are a prefix: start after
+    // them. u = (node - c)/L is computed as in the loop, and it is monotone
+    // in the node coordinate (rounding is), so the same segments are skipped.
+    std::size_t k = first_segment_not(iv.size() - 1, [&](std::size_t j) { return (node_c[iv[j + 1]] - c) / L <= -1; });
+    // F0, F1 at the previous segment's upper end are reused (asin is the cost).
+    double prev_u = std::nan(""), prev_f0 = 0, prev_f1 = 0;
+    // A segment's lower u is the previous one's upper u (the same expression
+    // of the same node): carried over, not divided again.
+    double ub = (node_c[iv[k]] - c) / L;
+    for (; k + 1 < iv.size(); ++k) {
+      const double ua = ub;
+      ub = (node_c[iv[k + 1]] - c) / L;
+      if (ua >= 1) break;  // this and every later segment lie above the band
+      if (!(ub > ua) || ub <= -1) continue;
+      const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);
+      const double f0a = u1 == prev_u ? prev_f0 : F0(u1), f1a = u1 == prev_u ? prev_f1 : F1(u1);
+      prev_u = u2;
+      prev_f0 = F0(u2);
+      prev_f1 = F1(u2);
+      const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
+      const double du = ub - ua;
+      // The lower node is usually the previous segment's upper node: merge.
+      if (idx.size() > first && idx.back() == iv[k]) {
+        val.back() += k2pi * (ub * I0 - I1) / du;
+      } else {
+        idx.push_back(iv[k]);
+        val.push_back(k2pi * (ub * I0 - I1) / du);
+      }
+      idx.push_back(iv[k + 1]);
+      val.push_back(k2pi * (I1 - ua * I0) / du);
+    }
+  }
+}
+
+}  // namespace rackopt
