@@ -1,5 +1,7 @@
 #include "rackopt/study/fidelity_settings.hpp"
 
+#include "rackopt/wear_reliability/life_scaling.hpp"
+
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/units/units.hpp"
 
@@ -35,9 +37,15 @@ std::vector<std::pair<std::string, std::string>> fidelity_settings(const Drive& 
                                                                     : static_cast<double>(d.reliability.seed)));
       out.emplace_back("reliability sampling", d.reliability.sobol ? "sobol" : "pseudo");
       out.emplace_back("bootstrap replicates", num(o.bootstrap_replicates.value_or(d.reliability.bootstrap_replicates)));
-      out.emplace_back("life table", inputs == 1 ? on(d.reliability.life_table) + ", tolerance " +
-                                                       num(d.reliability.life_table_tolerance)
-                                                 : "off (several inputs)");
+      // The table runs along the one input that shapes the life (contact
+      // ratio or load); the wear coefficient and the hardness only scale it
+      // (wear_reliability/life_scaling.hpp).
+      std::size_t shaping = 0;
+      for (const auto& in : d.reliability.inputs) shaping += input_scales_life(in.key) ? 0 : 1;
+      out.emplace_back("life table", shaping == 0   ? std::string("not needed (the inputs only scale the nominal life)")
+                                     : shaping == 1 ? on(d.reliability.life_table) + ", tolerance " +
+                                                          num(d.reliability.life_table_tolerance)
+                                                    : std::string("off (two inputs shape the life)"));
     }
   }
   return out;
