@@ -18,6 +18,9 @@
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
+#ifdef RACKOPT_WITH_MPI
+#include "rackopt/mpi/mpi_job.hpp"
+#endif
 
 namespace rackopt::cli {
 namespace {
@@ -56,6 +59,14 @@ int cmd_run(const Args& a) {
   opt.out_dir = out_dir;
   opt.resume = a.resume;
   opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 0u;
+#ifdef RACKOPT_WITH_MPI
+  // Under mpirun every rank computes its share of each batch, with
+  // --threads threads (default 1: the ranks already fill the cores).
+  if (mpi::MpiJob* job = mpi::MpiJob::current(); job && job->size() > 1) {
+    opt.threads = a.threads > 0 ? static_cast<unsigned>(a.threads) : 1u;
+    opt.executor = job->executor(opt.threads);
+  }
+#endif
   opt.stop = [] { return stop_requested(); };
   opt.progress = [&](const study::Progress& p) {
     std::string detail;

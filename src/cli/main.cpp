@@ -15,6 +15,7 @@
 // --json exactly one JSON object goes to stdout (on every error too) and
 // everything meant for people goes to stderr.
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include <gsl/gsl_errno.h>
@@ -27,6 +28,11 @@
 #include "rackopt/output/folder_lock.hpp"
 #include "rackopt/output/json_writer.hpp"
 #include "rackopt/record/evaluation_store.hpp"
+#ifdef RACKOPT_WITH_MPI
+#include "rackopt/mpi/mpi_job.hpp"
+#include "rackopt/study/study_problem.hpp"
+#include "rackopt/studyfile/study_loader.hpp"
+#endif
 
 namespace {
 
@@ -81,8 +87,42 @@ void print_json_error(const std::string& kind, const std::string& msg) {
 
 }  // namespace
 
+#ifdef RACKOPT_WITH_MPI
+// Ranks 1..N-1 of `mpirun -np N rackopt run STUDY ...`: load the same study
+// and compute the designs rank 0 sends (mpi/mpi_job.hpp). Silent: rank 0
+// alone prints, and reports a rank that could not start.
+int mpi_worker(rackopt::mpi::MpiJob& job, int argc, char** argv) {
+  std::string why_not;
+  std::unique_ptr<rackopt::study::StudyProblem> problem;
+  unsigned threads = 1;
+  try {
+    const Args args = parse_args(argc, argv);
+    if (args.threads > 0) threads = static_cast<unsigned>(args.threads);
+    if (args.command == "run" && !args.file.empty()) {
+      const rackopt::study::StudySpec spec = rackopt::studyfile::load_study_file(args.file, args.overrides);
+      problem = std::make_unique<rackopt::study::StudyProblem>(spec);
+    } else {
+      why_not = "only 'rackopt run' uses the MPI ranks";
+    }
+  } catch (const std::exception& e) {
+    why_not = e.what();
+  }
+  return job.serve(problem.get(), why_not, threads);
+}
+#endif
+
 int main(int argc, char** argv) {
   gsl_set_error_handler_off();  // GSL would abort() the process otherwise
+#ifdef RACKOPT_WITH_MPI
+  // Under mpirun: every rank joins the job before anything else; rank 0
+  // goes on as the program (the job's destructor stops the workers on every
+  // way out), the others serve.
+  std::unique_ptr<rackopt::mpi::MpiJob> mpi_job;
+  if (rackopt::mpi::MpiJob::launched()) {
+    mpi_job = std::make_unique<rackopt::mpi::MpiJob>(&argc, &argv);
+    if (mpi_job->rank() > 0) return mpi_worker(*mpi_job, argc, argv);
+  }
+#endif
   // Known before parsing, so that a usage error is a JSON object too.
   bool json = false;
   bool args_command_empty = true;

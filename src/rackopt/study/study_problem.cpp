@@ -194,13 +194,16 @@ solvers::Evaluation StudyProblem::map_metrics(std::span<const double> values, co
 }
 
 DesignEvaluation StudyProblem::evaluate_design(std::span<const double> x_si, unsigned metric_options_threads) const {
+  return to_evaluation(compute_metrics(x_si, metric_options_threads));
+}
+
+DesignMetrics StudyProblem::compute_metrics(std::span<const double> x_si, unsigned metric_options_threads) const {
   const auto t0 = std::chrono::steady_clock::now();
-  DesignEvaluation d;
+  DesignMetrics d;
   d.x.assign(x_si.begin(), x_si.end());
   const std::size_t n = shared_->labels.size();
   d.metric_values.assign(n, 0.0);
   d.metric_ok.assign(n, false);
-  std::string failure;
   try {
     const Drive drive = drive_at(x_si);
     metrics::MetricOptions mo = shared_->spec.metric_options;
@@ -213,24 +216,34 @@ DesignEvaluation StudyProblem::evaluate_design(std::span<const double> x_si, uns
     if (const metrics::MetricValue* f = mv.first_failure()) {
       // Name the real cause: an impossible geometry fails every metric that
       // needs it, and is not the first such metric's failure.
-      failure = f->cause == "geometry"
-                    ? "the design's geometry is impossible (" + f->error_code + "): " + f->message
-                    : f->label + " failed (" + f->error_code + (f->cause.empty() || f->cause == "metric"
-                                                                    ? std::string()
-                                                                    : ", in the " + f->cause + " model") +
-                          "): " + f->message;
+      d.failure = f->cause == "geometry"
+                      ? "the design's geometry is impossible (" + f->error_code + "): " + f->message
+                      : f->label + " failed (" + f->error_code + (f->cause.empty() || f->cause == "metric"
+                                                                      ? std::string()
+                                                                      : ", in the " + f->cause + " model") +
+                            "): " + f->message;
     }
     d.warnings = mv.warnings;
   } catch (const InputError& e) {
     // A range check of the loader that only this design breaks (e.g. a
     // clearance below -0.25 m at a small module): an impossible design, not
     // a set-up error; the runner checks the start design up front.
-    failure = "design refused by the problem checks (invalid_design): " + e.message() + " [" + e.key_path() + "]";
+    d.failure = "design refused by the problem checks (invalid_design): " + e.message() + " [" + e.key_path() + "]";
   } catch (const DesignError& e) {
-    failure = "design rejected (" + e.code() + "): " + e.what();
+    d.failure = "design rejected (" + e.code() + "): " + e.what();
   }
-  d.evaluation = map_metrics(d.metric_values, d.metric_ok, failure);
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return d;
+}
+
+DesignEvaluation StudyProblem::to_evaluation(DesignMetrics m) const {
+  DesignEvaluation d;
+  d.evaluation = map_metrics(m.metric_values, m.metric_ok, m.failure);
+  d.x = std::move(m.x);
+  d.metric_values = std::move(m.metric_values);
+  d.metric_ok = std::move(m.metric_ok);
+  d.warnings = std::move(m.warnings);
+  d.seconds = m.seconds;
   return d;
 }
 

@@ -42,6 +42,18 @@ struct DesignEvaluation {
   double seconds = 0;                 // wall time of the model evaluation (0 when rebuilt)
 };
 
+// What the models say of one design, before the study maps it to what the
+// solver sees: the part of an evaluation that can be computed anywhere (a
+// thread, another MPI rank) and sent back as it is (design_wire.hpp).
+struct DesignMetrics {
+  std::vector<double> x;              // full SI design
+  std::vector<double> metric_values;  // SI, StudySpec::all_metrics() order; 0 where !metric_ok
+  std::vector<bool> metric_ok;
+  std::string failure;                // why the design failed ("" when every metric is ok)
+  std::vector<std::string> warnings;  // model warnings of this design
+  double seconds = 0;                 // wall time of the models
+};
+
 class StudyProblem final : public solvers::Problem {
  public:
   // Loads the problem file (spec.problem_path with spec.problem_overrides)
@@ -93,6 +105,11 @@ class StudyProblem final : public solvers::Problem {
   // kFailed evaluation with the reason; `metric_options_threads` sets the
   // Monte Carlo threads of wear_life_at_R (results do not depend on it).
   DesignEvaluation evaluate_design(std::span<const double> x_si, unsigned metric_options_threads = 1) const;
+  // The two halves of evaluate_design: the models' part, and the mapping
+  // with this view's objective scales (to_evaluation(compute_metrics(x))
+  // is evaluate_design(x), bit for bit).
+  DesignMetrics compute_metrics(std::span<const double> x_si, unsigned metric_options_threads = 1) const;
+  DesignEvaluation to_evaluation(DesignMetrics m) const;
 
   // The solver evaluation from metric values (as evaluate_design maps them);
   // used to rebuild a recorded evaluation bit for bit. `failure` is the
