@@ -276,8 +276,21 @@ struct MeshStiffnessModel::Impl {
   template <class Parts>
   MeshState state(double X, int side, Parts&& parts_of) const {
     MeshState st;
-    st.travel = X;
     st.pairs.reserve(static_cast<std::size_t>(slots) + 1);
+    state_into(st, X, side, parts_of);
+    return st;
+  }
+
+  // The same into `st`, whose pairs' storage is reused: a curve computes
+  // every sample into one scratch state and so allocates nothing per sample
+  // once the scratch holds the most pairs in mesh.
+  template <class Parts>
+  void state_into(MeshState& st, double X, int side, Parts&& parts_of) const {
+    st.travel = X;
+    st.stiffness = 0;
+    st.approach = 0;
+    st.local_stiffness = 0;
+    st.pairs.clear();
     std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
@@ -309,11 +322,10 @@ struct MeshStiffnessModel::Impl {
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
         st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2)) {
-      return st;
+      return;
     }
     solve(st);
     if (pair.contact_depends_on_force() && st.pairs.size() > 1) load_dependent_contact(st, parts_of);
-    return st;
   }
 
   // The double-pair zone with a load-dependent contact term and no relief
@@ -665,7 +677,7 @@ std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const 
   return impl_->breakpoints(lo, hi);
 }
 
-StiffnessCurve MeshStiffnessModel::curve() const {
+StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
   const Impl& im = *impl_;
   StiffnessCurve out;
   out.warnings = im.warnings;
@@ -705,8 +717,21 @@ StiffnessCurve MeshStiffnessModel::curve() const {
     return a.X < c.X || (a.X == c.X && a.side < c.side);
   });
 
+  // One scratch state for every evaluation of this curve (its pairs'
+  // storage is reused). With relief the bisection below compares the pairs
+  // of neighbouring samples, so those keep them until the end.
+  MeshState scratch;
+  scratch.pairs.reserve(static_cast<std::size_t>(im.slots) + 1);
+  const bool keep_pairs = detail == CurveDetail::kFull || im.relief;
   out.samples.reserve(probes.size());
-  for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts));
+  for (const Probe& pr : probes) {
+    if (keep_pairs) {
+      out.samples.push_back(im.state(pr.X, pr.side, parts));
+    } else {
+      im.state_into(scratch, pr.X, pr.side, parts);
+      out.samples.push_back(MeshState{scratch.travel, scratch.stiffness, scratch.approach, scratch.local_stiffness, {}});
+    }
+  }
 
   if (im.relief) {
     // With relief the tangent stiffness jumps where a relieved pair starts or
@@ -823,7 +848,10 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   out.travel_at_min = out.samples[i_min].travel;
   out.k_max = out.samples[i_max].stiffness;
   out.travel_at_max = out.samples[i_max].travel;
-  auto k_at = [&](double X) { return im.state(X, 0, parts).stiffness; };
+  auto k_at = [&](double X) {
+    im.state_into(scratch, X, 0, parts);
+    return scratch.stiffness;
+  };
   const double x_tol = 1e-7 * im.pitch;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (piece[i - 1] != piece[i] || piece[i + 1] != piece[i]) continue;
@@ -847,6 +875,9 @@ StiffnessCurve MeshStiffnessModel::curve() const {
     }
   }
   out.k_fluctuation = out.k_mean > 0 ? (out.k_max - out.k_min) / out.k_mean : 0.0;
+  if (detail == CurveDetail::kSummary && im.relief) {
+    for (MeshState& st : out.samples) std::vector<PairState>().swap(st.pairs);
+  }
   return out;
 }
 
