@@ -41,6 +41,7 @@ struct MappedSpall {
 struct LocalParts {
   PairTeeth teeth;
   ContactLaw contact;     // the local contact term against the pair force
+  double contact_at_load = 0;  // contact.at(load.force): every sample starts from it
   double face_width = 0;  // effective contact width (reduced inside a spall)
   bool spalled = false;
 };
@@ -229,6 +230,7 @@ struct MeshStiffnessModel::Impl {
     out.spalled = lost_width > 0;
     out.teeth = pair.teeth(s, ps ? &ps->band : nullptr, rs ? &rs->band : nullptr, out.face_width);
     out.contact = pair.contact_law(s, out.face_width);
+    out.contact_at_load = out.contact.at(drive.load.force);
     if ((ps || rs) && !out.spalled) {
       const PairTeeth healthy = pair.teeth(s, nullptr, nullptr, out.face_width);
       out.spalled = healthy.pinion.total() != out.teeth.pinion.total() ||
@@ -316,7 +318,7 @@ struct MeshStiffnessModel::Impl {
       p.rack_foundation = lp.teeth.rack_foundation;
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
-      p.hertz = lp.contact.at(drive.load.force);
+      p.hertz = lp.contact_at_load;
       if (st.pairs.size() < 2) law2[st.pairs.size()] = lp.contact;
       st.pairs.push_back(p);
     }
@@ -573,6 +575,22 @@ struct MeshStiffnessModel::Impl {
       st.stiffness = k;
       return;
     }
+    if (n == 1) {
+      // One pair in mesh (every single-pair zone): the Cholesky solve below
+      // on the 1 x 1 matrix c is l = sqrt(c), f = (1 / l) / l, written out
+      // with the same operations so that K keeps its last bits.
+      PairState& p = st.pairs[0];
+      const double c = p.local() + p.body;
+      if (c > 0) {
+        const double l = std::sqrt(c);
+        const double K = (1.0 / l) / l;
+        if (K > 0 && std::isfinite(K)) {
+          st.stiffness = K;
+          p.load_share = 1.0;
+          return;
+        }
+      }
+    }
     // One beam shared by all pairs, and the pairs' own coupling:
     // C = diag(c_j) + C_b + C_pairs; K = 1^T C^-1 1.
     // Contact is unilateral (docs/models/mesh.md): the beam can carry a contact
@@ -709,13 +727,23 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
     if (!near_break(X)) probes.push_back({X, X >= l - tol ? -1 : +1});
   }
   if (l - n_uniform * dX > tol && !near_break(l)) probes.push_back({l, -1});
+  // The uniform probes and those at the (sorted, distinct) breakpoints are
+  // each in order already: merge them (sorting the whole list cost 9 % of a
+  // curve).
+  std::vector<Probe> at_breaks;
+  at_breaks.reserve(2 * out.breakpoints.size());
   for (double xb : out.breakpoints) {
-    if (xb > tol) probes.push_back({xb, -1});
-    if (xb < l - tol) probes.push_back({xb, +1});
+    if (xb > tol) at_breaks.push_back({xb, -1});
+    if (xb < l - tol) at_breaks.push_back({xb, +1});
   }
-  std::sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& c) {
+  const auto probe_less = [](const Probe& a, const Probe& c) {
     return a.X < c.X || (a.X == c.X && a.side < c.side);
-  });
+  };
+  {
+    std::vector<Probe> merged(probes.size() + at_breaks.size());
+    std::merge(probes.begin(), probes.end(), at_breaks.begin(), at_breaks.end(), merged.begin(), probe_less);
+    probes = std::move(merged);
+  }
 
   // One scratch state for every evaluation of this curve (its pairs'
   // storage is reused). With relief the bisection below compares the pairs
