@@ -66,6 +66,17 @@ using LocalCache = std::unordered_map<CacheKey, LocalParts, CacheKeyHash>;
 
 int floor_div_int(double v) { return static_cast<int>(std::floor(v)); }
 
+// std::llround(v) (halves away from zero) without the library call, for
+// |v| < 2^62: v - trunc(v) is exact there. The cache key below is computed
+// for every pair of every sample.
+std::int64_t round_to_int64(double v) {
+  auto t = static_cast<std::int64_t>(v);  // towards zero
+  const double frac = v - static_cast<double>(t);
+  if (frac >= 0.5) ++t;
+  if (frac <= -0.5) --t;
+  return t;
+}
+
 // A drive built in code skips the loader's check: a rigid mesh has no finite
 // stiffness, so refuse it rather than return inf.
 const Drive& checked(const Drive& drive) {
@@ -244,7 +255,10 @@ struct MeshStiffnessModel::Impl {
     const bool rs = !spalls.empty() && spall_for(Member::kRack, j) != nullptr;
     // Samples on the uniform grid land on s = A0 + k pb/N up to rounding; a
     // key on a 1e-9 p_b grid merges those and nothing physically distinct.
-    CacheKey key{static_cast<std::int64_t>(std::llround(s / (pb * 1e-9))), ps ? i : -1, rs ? j : -1};
+    const double grid = s / (pb * 1e-9);
+    const std::int64_t s_key =
+        std::abs(grid) < 0x1p62 ? round_to_int64(grid) : static_cast<std::int64_t>(std::llround(grid));
+    CacheKey key{s_key, ps ? i : -1, rs ? j : -1};
     auto it = cache.find(key);
     if (it != cache.end()) return it->second;
     return cache.emplace(key, local_parts(s, i, j)).first->second;
@@ -300,7 +314,7 @@ struct MeshStiffnessModel::Impl {
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
     for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
-      PairState p;
+      PairState& p = st.pairs.emplace_back();  // built in place: no copy of the pair
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);
       p.slot = ((j % slots) + slots) % slots;
@@ -319,8 +333,7 @@ struct MeshStiffnessModel::Impl {
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
       p.hertz = lp.contact_at_load;
-      if (st.pairs.size() < 2) law2[st.pairs.size()] = lp.contact;
-      st.pairs.push_back(p);
+      if (st.pairs.size() <= 2) law2[st.pairs.size() - 1] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
         st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2)) {
@@ -718,9 +731,12 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
   const int n_uniform = static_cast<int>(std::floor(l / dX + 1e-9));
   probes.reserve(static_cast<std::size_t>(n_uniform) + 2 * out.breakpoints.size() + 4);
   const double tol = 1e-9 * im.pitch;
+  // Asked in increasing X: a cursor instead of a binary search per probe
+  // (the first breakpoint >= X - tol, as std::lower_bound would find).
+  auto next_break = out.breakpoints.begin();
   auto near_break = [&](double X) {
-    auto it = std::lower_bound(out.breakpoints.begin(), out.breakpoints.end(), X - tol);
-    return it != out.breakpoints.end() && *it <= X + tol;
+    while (next_break != out.breakpoints.end() && *next_break < X - tol) ++next_break;
+    return next_break != out.breakpoints.end() && *next_break <= X + tol;
   };
   for (int i = 0; i <= n_uniform; ++i) {
     const double X = std::min(i * dX, l);

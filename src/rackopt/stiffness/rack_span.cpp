@@ -28,6 +28,20 @@ double require_positive(double value, const char* name) {
   return value;
 }
 
+// The failures of the checks below, out of line: the checks run several
+// times per curve sample, their messages never in a valid model.
+[[noreturn, gnu::noinline, gnu::cold]] void abscissa_outside(double a, double l) {
+  std::ostringstream os;
+  os << "contact abscissa a = " << a << " m is outside the span [0, " << l << "] m";
+  fail(os.str());
+}
+
+[[noreturn, gnu::noinline, gnu::cold]] void heights_not_finite(double e_j, double e_k) {
+  std::ostringstream os;
+  os << "contact heights must be finite, got e_j = " << e_j << ", e_k = " << e_k;
+  fail(os.str());
+}
+
 }  // namespace
 
 RackSpanCompliance::RackSpanCompliance(const RackSpec& rack, double pressure_angle,
@@ -64,14 +78,10 @@ RackSpanCompliance::RackSpanCompliance(const RackSpec& rack, double pressure_ang
   }
 }
 
-double RackSpanCompliance::checked_abscissa(double a) const {
+inline double RackSpanCompliance::checked_abscissa(double a) const {
   // a = x - k*span can miss the hinge by a rounding error; accept that much.
   const double tolerance = 1e-9 * l_;
-  if (!std::isfinite(a) || a < -tolerance || a > l_ + tolerance) {
-    std::ostringstream os;
-    os << "contact abscissa a = " << a << " m is outside the span [0, " << l_ << "] m";
-    fail(os.str());
-  }
+  if (!std::isfinite(a) || a < -tolerance || a > l_ + tolerance) abscissa_outside(a, l_);
   return std::clamp(a, 0.0, l_);
 }
 
@@ -79,11 +89,7 @@ RackSpanInfluence RackSpanCompliance::parts(double a_j, double e_j, double a_k,
                                             double e_k) const {
   double x = checked_abscissa(a_j);
   double xi = checked_abscissa(a_k);
-  if (!std::isfinite(e_j) || !std::isfinite(e_k)) {
-    std::ostringstream os;
-    os << "contact heights must be finite, got e_j = " << e_j << ", e_k = " << e_k;
-    fail(os.str());
-  }
+  if (!std::isfinite(e_j) || !std::isfinite(e_k)) heights_not_finite(e_j, e_k);
   // Without the couple term the tooth height plays no role in load or response.
   double ex = couple_ ? e_j : 0.0;
   double exi = couple_ ? e_k : 0.0;
