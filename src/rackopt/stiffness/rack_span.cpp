@@ -122,4 +122,24 @@ double RackSpanCompliance::influence(double a_j, double e_j, double a_k, double 
   return parts(a_j, e_j, a_k, e_k).total();
 }
 
+double RackSpanCompliance::self(double a, double e) const {
+  // parts(a, e, a, e) term by term, written the same way so that the sum
+  // keeps its last bits (tests/stiffness/rack_span_test.cpp checks it).
+  const double x = checked_abscissa(a);
+  if (!std::isfinite(e)) heights_not_finite(e, e);
+  const double ex = couple_ ? e : 0.0;
+  namespace hb = hinged_beam;
+  const double s = s_, c = c_, l = l_;
+  const double vertical = s * s * inv_EI_ * hb::bending_deflection_per_force(x, x, l);
+  const double couple = c * c * ex * ex * inv_EI_ * hb::bending_rotation_per_couple(x, x, l);
+  const double coupling = s * c * inv_EI_ *
+                          (ex * hb::bending_deflection_per_couple(x, x, l) +
+                           ex * hb::bending_rotation_per_force(x, x, l));
+  const double axial = c * c * inv_EA_ *
+                       (pin_pin_ ? hb::axial_displacement_pin_pin(x, x, l) : hb::axial_displacement_pin_roller(x, x));
+  const double shear = s * s * inv_kGA_ * hb::shear_deflection_per_force(x, x, l);
+  const double shear_couple = c * c * ex * ex * inv_kGA_ * hb::shear_rotation_per_couple(l);
+  return vertical + couple + coupling + axial + shear + shear_couple;
+}
+
 }  // namespace rackopt
