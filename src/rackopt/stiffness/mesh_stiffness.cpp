@@ -272,7 +272,11 @@ struct MeshStiffnessModel::Impl {
     return (r * sa * sa + geo.profile_shift_length + geo.clearance - h) / sa;
   }
 
-  int pinion_tooth_of(int rack_j) const { return ((rack_j % z) + z) % z; }
+  // j mod z in 0..z-1 (one integer division, not two: per pair and sample).
+  int pinion_tooth_of(int rack_j) const {
+    const int r = rack_j % z;
+    return r < 0 ? r + z : r;
+  }
 
   const MappedSpall* spall_for(Member member, int tooth) const {
     for (const MappedSpall& m : spalls) {
@@ -369,7 +373,8 @@ struct MeshStiffnessModel::Impl {
       PairState& p = st.pairs.emplace_back();  // built in place: no copy of the pair
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);
-      p.slot = ((j % slots) + slots) % slots;
+      p.slot = j % slots;
+      if (p.slot < 0) p.slot += slots;
       p.s = std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol);
       p.s = std::clamp(p.s, s_start, s_end);
       p.x = x_of(j, X);

@@ -57,7 +57,12 @@ struct ContactLaw {
   // two-pair load sharing calls it several times per curve sample.
   double at(double force) const {
     if (slope == 0) return c_ref;
-    const double c = c_ref - slope * std::log(std::max(force, floor) / f_ref);
+    // f_ref is 1 N for any contact narrower than 1 m (contact_law: the
+    // larger of 1 N and the floor of 1 N per metre of width). Dividing by
+    // it is exact, so skipping it changes nothing but the time: it sits on
+    // the critical path of the two-pair Newton iteration.
+    const double f = std::max(force, floor);
+    const double c = c_ref - slope * std::log(f_ref == 1.0 ? f : f / f_ref);
     if (!(c > 0)) strip_too_wide(force);
     return c;
   }
