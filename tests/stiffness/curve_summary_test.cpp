@@ -75,5 +75,23 @@ TEST(CurveSummary, EqualsTheFullCurveWithProfileRelief) {
   expect_same_summary(d);
 }
 
+// A model given the drive's geometry (as evaluate_metrics does, which built
+// it for the geometry metrics) is the model that builds it itself.
+TEST(CurveSummary, ModelWithPrebuiltGeometryIsTheSame) {
+  for (const char* file : {"rack_railway.yaml", "ship_lift.yaml", "large_module.yaml"}) {
+    SCOPED_TRACE(file);
+    const Drive d = test_support::load_shipped_problem(file);
+    const StiffnessCurve own = MeshStiffnessModel(d).curve(CurveDetail::kSummary);
+    const StiffnessCurve given = MeshStiffnessModel(d, build_mesh_geometry(d)).curve(CurveDetail::kSummary);
+    EXPECT_EQ(given.k_min, own.k_min);
+    EXPECT_EQ(given.k_max, own.k_max);
+    EXPECT_EQ(given.k_mean, own.k_mean);
+    EXPECT_EQ(given.travel_at_min, own.travel_at_min);
+    EXPECT_EQ(given.warnings, own.warnings);
+    ASSERT_EQ(given.samples.size(), own.samples.size());
+    for (std::size_t i = 0; i < own.samples.size(); ++i) ASSERT_EQ(given.samples[i].stiffness, own.samples[i].stiffness);
+  }
+}
+
 }  // namespace
 }  // namespace rackopt

@@ -219,7 +219,9 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     out.models_run.insert(Model::kStiffnessCurve);
     ++out.model_runs;
     try {
-      const MeshStiffnessModel model(drive);
+      // The geometry computed above is the model's own: reuse it.
+      const MeshStiffnessModel model = m.geometry_slot.value ? MeshStiffnessModel(drive, *m.geometry_slot.value)
+                                                             : MeshStiffnessModel(drive);
       // The metrics read each sample's own values and the curve's summary,
       // never its pairs: the summary curve skips storing them.
       m.curve_slot.value = model.curve(CurveDetail::kSummary);

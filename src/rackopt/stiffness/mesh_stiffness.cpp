@@ -162,7 +162,8 @@ struct MeshStiffnessModel::Impl {
   int slots = 1;
   std::vector<MappedSpall> spalls;
 
-  explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)), pair(checked(d), geo) {
+  explicit Impl(const Drive& d) : Impl(d, build_mesh_geometry(d)) {}
+  Impl(const Drive& d, MeshGeometry g) : drive(d), geo(std::move(g)), pair(checked(d), geo) {
     warnings = geo.warnings;
     warnings.insert(warnings.end(), pair.warnings().begin(), pair.warnings().end());
     const Effects& fx = drive.effects;
@@ -745,6 +746,8 @@ struct MeshStiffnessModel::Impl {
 };
 
 MeshStiffnessModel::MeshStiffnessModel(const Drive& drive) : impl_(std::make_unique<Impl>(drive)) {}
+MeshStiffnessModel::MeshStiffnessModel(const Drive& drive, MeshGeometry geometry)
+    : impl_(std::make_unique<Impl>(drive, std::move(geometry))) {}
 MeshStiffnessModel::~MeshStiffnessModel() = default;
 MeshStiffnessModel::MeshStiffnessModel(MeshStiffnessModel&&) noexcept = default;
 MeshStiffnessModel& MeshStiffnessModel::operator=(MeshStiffnessModel&&) noexcept = default;

@@ -93,6 +93,11 @@ class MeshStiffnessModel {
   // Builds the geometry and the tooth models and checks the spalls. Throws
   // DesignError for an impossible design or fault.
   explicit MeshStiffnessModel(const Drive& drive);
+  // The same with the drive's geometry built already: `geometry` must be
+  // build_mesh_geometry(drive). A caller that needed it anyway saves
+  // building it again: nearly all of the model's construction (the
+  // undercut search), about a tenth of a design with its curve.
+  MeshStiffnessModel(const Drive& drive, MeshGeometry geometry);
   ~MeshStiffnessModel();
   MeshStiffnessModel(MeshStiffnessModel&&) noexcept;
   MeshStiffnessModel& operator=(MeshStiffnessModel&&) noexcept;
