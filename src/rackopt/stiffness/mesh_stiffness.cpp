@@ -95,7 +95,7 @@ class LocalCache {
  private:
   struct Slot {
     CacheKey key{0, 0, 0};
-    std::int32_t index = -1;  // into values_; -1: empty
+    std::int32_t index = -1;  // into the chunks; -1: empty
   };
   std::size_t home(const CacheKey& key) const { return CacheKeyHash{}(key) & (slots_.size() - 1); }
   void place(const CacheKey& key, std::int32_t index) {
