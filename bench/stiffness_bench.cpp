@@ -28,6 +28,18 @@ void BM_FullSpanCurveWithModel(benchmark::State& state) {
 }
 BENCHMARK(BM_FullSpanCurveWithModel)->Arg(100)->Arg(25)->Unit(benchmark::kMillisecond);
 
+// The same curve as the stiffness metrics ask for it: each sample's values
+// and the exact extremes and mean, no per-pair storage (CurveDetail::kSummary).
+void BM_FullSpanCurveSummary(benchmark::State& state) {
+  rackopt::Drive d = railway();
+  d.numerics.positions_per_period = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    rackopt::MeshStiffnessModel model(d);
+    benchmark::DoNotOptimize(model.curve(rackopt::CurveDetail::kSummary).k_min);
+  }
+}
+BENCHMARK(BM_FullSpanCurveSummary)->Arg(100)->Arg(25)->Unit(benchmark::kMillisecond);
+
 // What each effect of the FE-grade pair compliance costs on that curve
 // (docs/models/fe_calibration.md, "Each effect's share"): 0 the papers'
 // tooth model (constant contact term, clamped rack tooth, Sainsot's

@@ -322,6 +322,25 @@ TEST(RackSpan, PartsSumToInfluence) {
       EXPECT_EQ(body.parts(aj, 0.08, ak, 0.07).total(), body.influence(aj, 0.08, ak, 0.07));
 }
 
+// self() is influence() of a contact on itself written without the
+// ordering of two contacts: the same bits for every switch of the body model.
+TEST(RackSpan, SelfIsInfluenceOnItselfExactly) {
+  for (Supports sup : {Supports::kPinPin, Supports::kPinRoller}) {
+    for (int flags = 0; flags < 8; ++flags) {
+      Effects fx = all_effects();
+      fx.couple_term = (flags & 1) != 0;
+      fx.body_shear = (flags & 2) != 0;
+      fx.body_axial = (flags & 4) != 0;
+      RackSpanCompliance body(seed_rack(sup), kAlpha14, fx);
+      for (double a : {0.0, 1e-12, 0.013, 0.6, 1.2, 1.7171, 2.3999, 2.4}) {
+        for (double e : {-0.02, 0.0, 0.0817, 0.1}) {
+          EXPECT_EQ(body.self(a, e), body.influence(a, e, a, e)) << "a = " << a << ", e = " << e << ", flags " << flags;
+        }
+      }
+    }
+  }
+}
+
 // Three contacts a pitch (100 mm, the rack railway paper) apart anywhere on the span: the
 // 3x3 body flexibility matrix is symmetric positive definite.
 TEST(RackSpan, ThreeContactMatrixPositiveDefinite) {

@@ -23,6 +23,24 @@ struct Polar {
   double angle_from_centre_line;  // theta >= 0 towards the studied flank
 };
 
+// What the fillet and the involute of one pinion need that does not depend
+// on the point: the undercut search evaluates both about a thousand times
+// per design, and these took five of their ten transcendental calls.
+struct Generation {
+  double m, r, rho, xc, yc, teeth;
+  double rb, alpha2;
+  explicit Generation(const PinionSpec& p)
+      : m(p.module),
+        r(pitch_radius(p)),
+        rho(p.tip_radius_coef * m),
+        xc(cutter_tip_flat_half_width(p)),
+        yc((p.dedendum_coef - p.profile_shift) * m - rho),
+        teeth(p.teeth),
+        rb(base_radius(p)),
+        alpha2(kPi / (2.0 * p.teeth) + involute_function(p.pressure_angle) +
+               2.0 * p.profile_shift * std::tan(p.pressure_angle) / p.teeth) {}
+};
+
 // Fillet point in polar form (see fillet_point for the meaning of phi).
 //
 // Generation kinematics, pinion frame with the pinion centre at the origin:
@@ -33,12 +51,8 @@ struct Polar {
 // The round centre is (X_c, Y_c) = (w_flat, (h_a0 - x) m - rho). The round
 // touches the generated surface where its normal passes through I, i.e. at
 // X_c - r t = Y_c cot(phi) for the round normal angle phi.
-Polar fillet_polar(const PinionSpec& p, double phi) {
-  const double m = p.module;
-  const double r = pitch_radius(p);
-  const double rho = p.tip_radius_coef * m;
-  const double xc = cutter_tip_flat_half_width(p);
-  const double yc = (p.dedendum_coef - p.profile_shift) * m - rho;
+Polar fillet_polar(const Generation& g, double phi) {
+  const double r = g.r, rho = g.rho, xc = g.xc, yc = g.yc;
   const double cot_phi = std::cos(phi) / std::sin(phi);
   const double t = (xc - yc * cot_phi) / r;
   const double along = yc * cot_phi + rho * std::cos(phi);  // e_X component from I
@@ -49,7 +63,15 @@ Polar fillet_polar(const PinionSpec& p, double phi) {
   const double fy = -r * ct + along * st + up * ct;
   // Angle measured from the downward direction (centre of the cut space).
   const double from_space_centre = std::atan2(fx, -fy);
-  return {std::hypot(fx, fy), kPi / p.teeth - from_space_centre};
+  return {std::hypot(fx, fy), kPi / g.teeth - from_space_centre};
+}
+
+// involute_half_angle with the pinion's constants computed once.
+double involute_half_angle(const Generation& g, double radius) {
+  const double ratio = std::max(radius / g.rb, 1.0);
+  // inv(alpha_R) = tan alpha_R - alpha_R with cos alpha_R = r_b / R.
+  const double inv_r = std::sqrt(ratio * ratio - 1.0) - std::acos(1.0 / ratio);
+  return g.alpha2 - inv_r;
 }
 
 }  // namespace
@@ -69,21 +91,13 @@ double cutter_tip_radius_for_zero_flat(const PinionSpec& p) {
 }
 
 ToothPoint fillet_point(const PinionSpec& p, double phi) {
-  const Polar q = fillet_polar(p, phi);
+  const Polar q = fillet_polar(Generation(p), phi);
   return {q.radius * std::sin(q.angle_from_centre_line),
           q.radius * std::cos(q.angle_from_centre_line)};
 }
 
 double involute_half_angle(const PinionSpec& p, double radius) {
-  const double a0 = p.pressure_angle;
-  const double z = p.teeth;
-  const double alpha2 = kPi / (2.0 * z) + involute_function(a0) +
-                        2.0 * p.profile_shift * std::tan(a0) / z;
-  const double rb = base_radius(p);
-  const double ratio = std::max(radius / rb, 1.0);
-  // inv(alpha_R) = tan alpha_R - alpha_R with cos alpha_R = r_b / R.
-  const double inv_r = std::sqrt(ratio * ratio - 1.0) - std::acos(1.0 / ratio);
-  return alpha2 - inv_r;
+  return involute_half_angle(Generation(p), radius);
 }
 
 ToothPoint involute_point(const PinionSpec& p, double radius) {
@@ -119,11 +133,12 @@ FormCircle generated_form_circle(const PinionSpec& p) {
   // fillet point lies inside the involute tooth outline, i.e. the involute
   // there has been cut away.
   const double a0 = p.pressure_angle;
+  const Generation gen(p);
   auto gap = [&](double phi, double* radius) {
-    const Polar q = fillet_polar(p, phi);
+    const Polar q = fillet_polar(gen, phi);
     *radius = q.radius;
     if (q.radius < rb) return -1.0;  // no involute there; marker only
-    return involute_half_angle(p, q.radius) - q.angle_from_centre_line;
+    return involute_half_angle(gen, q.radius) - q.angle_from_centre_line;
   };
   // Bisection on phi between a point where pred holds and one where it fails;
   // returns the last point where it holds.

@@ -219,8 +219,12 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     out.models_run.insert(Model::kStiffnessCurve);
     ++out.model_runs;
     try {
-      const MeshStiffnessModel model(drive);
-      m.curve_slot.value = model.curve();
+      // The geometry computed above is the model's own: reuse it.
+      const MeshStiffnessModel model = m.geometry_slot.value ? MeshStiffnessModel(drive, *m.geometry_slot.value)
+                                                             : MeshStiffnessModel(drive);
+      // The metrics read each sample's own values and the curve's summary,
+      // never its pairs: the summary curve skips storing them.
+      m.curve_slot.value = model.curve(CurveDetail::kSummary);
       // Post-processing of the one curve: listed in models_run, not counted as runs.
       m.dynamics_figures = mesh_dynamics_figures(model, *m.curve_slot.value, needed);
       if (m.dynamics_figures.ripple) out.models_run.insert(Model::kMeshRipple);

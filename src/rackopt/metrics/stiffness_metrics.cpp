@@ -22,7 +22,8 @@ constexpr ParameterSpec kRho{ParameterSpec::Use::kOptional, "rho", 500.0, 0.0, 1
 struct KsBounds {
   double lo = 0, hi = 0;
 };
-KsBounds ks_bounds(const StiffnessCurve& c, double rho) {
+// ln k of every sample and of the refined extremes.
+std::vector<double> ln_stiffness(const StiffnessCurve& c) {
   std::vector<double> lnk;
   lnk.reserve(c.samples.size() + 2);
   bool positive = c.k_min > 0;
@@ -35,6 +36,14 @@ KsBounds ks_bounds(const StiffnessCurve& c, double rho) {
   }
   lnk.push_back(std::log(c.k_min));
   lnk.push_back(std::log(c.k_max));
+  return lnk;
+}
+// Each metric computes only the side it reports (an exponential per sample
+// and side).
+double ks_lower_bound(const StiffnessCurve& c, double rho) { return std::exp(ks_min(ln_stiffness(c), rho, 1.0)); }
+double ks_upper_bound(const StiffnessCurve& c, double rho) { return std::exp(ks_max(ln_stiffness(c), rho, 1.0)); }
+KsBounds ks_bounds(const StiffnessCurve& c, double rho) {
+  const std::vector<double> lnk = ln_stiffness(c);
   return {std::exp(ks_min(lnk, rho, 1.0)), std::exp(ks_max(lnk, rho, 1.0))};
 }
 
@@ -65,14 +74,14 @@ void append_stiffness_metrics(std::vector<MetricDefinition>& r) {
                "exp(KS(ln k)) = (sum k_i^-rho)^(-1/rho) over the curve samples and the refined extremes "
                "(Kreisselmeier & Steinhauser 1979)",
                [](const ModelResults& m, const MetricRequest& q) {
-                 return MetricOutcome{ks_bounds(m.curve(), *q.parameter).lo};
+                 return MetricOutcome{ks_lower_bound(m.curve(), *q.parameter)};
                }});
   r.push_back({"max_stiffness_ks", "N/m", QuantityKind::kStiffness, "MN/m",
                "Kreisselmeier-Steinhauser smooth maximum of the stiffness samples: an upper bound of "
                "max_stiffness",
                curve, 0, kStiffnessEffects, true, kRho, "exp(KS(ln k)) = (sum k_i^rho)^(1/rho)",
                [](const ModelResults& m, const MetricRequest& q) {
-                 return MetricOutcome{ks_bounds(m.curve(), *q.parameter).hi};
+                 return MetricOutcome{ks_upper_bound(m.curve(), *q.parameter)};
                }});
   r.push_back({"stiffness_fluctuation_ks", "-", QuantityKind::kDimensionless, "",
                "(max_stiffness_ks - min_stiffness_ks)/k_mean: a smooth upper bound of "

@@ -5,11 +5,11 @@
 #include <span>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 #include <Eigen/Dense>
 
@@ -41,6 +41,7 @@ struct MappedSpall {
 struct LocalParts {
   PairTeeth teeth;
   ContactLaw contact;     // the local contact term against the pair force
+  double contact_at_load = 0;  // contact.at(load.force): every sample starts from it
   double face_width = 0;  // effective contact width (reduced inside a spall)
   bool spalled = false;
 };
@@ -61,9 +62,73 @@ struct CacheKeyHash {
     return static_cast<std::size_t>(h ^ (h >> 29));
   }
 };
-using LocalCache = std::unordered_map<CacheKey, LocalParts, CacheKeyHash>;
+// The tooth parts of one curve by position: an open-addressing table of
+// indices into chunks of 64 values (which stay put, so a reference handed
+// out survives later insertions, as with std::unordered_map). Every pair of
+// every sample looks a position up; the map's node allocation and bucket
+// arithmetic were 4-6 % of a curve.
+class LocalCache {
+ public:
+  explicit LocalCache(std::size_t expected) {
+    std::size_t n = 16;
+    while (n < 2 * expected) n *= 2;
+    slots_.assign(n, Slot{});
+  }
+  const LocalParts* find(const CacheKey& key) const {
+    for (std::size_t i = home(key);; i = (i + 1) & (slots_.size() - 1)) {
+      const Slot& sl = slots_[i];
+      if (sl.index < 0) return nullptr;
+      if (sl.key == key) return &value(static_cast<std::size_t>(sl.index));
+    }
+  }
+  // key must not be in the table.
+  const LocalParts& insert(const CacheKey& key, LocalParts value) {
+    if (2 * (count_ + 1) > slots_.size()) grow();
+    if (count_ % kChunk == 0) chunks_.push_back(std::make_unique<LocalParts[]>(kChunk));
+    LocalParts& stored = this->value(count_);
+    stored = std::move(value);
+    place(key, static_cast<std::int32_t>(count_));
+    ++count_;
+    return stored;
+  }
+
+ private:
+  struct Slot {
+    CacheKey key{0, 0, 0};
+    std::int32_t index = -1;  // into the chunks; -1: empty
+  };
+  std::size_t home(const CacheKey& key) const { return CacheKeyHash{}(key) & (slots_.size() - 1); }
+  void place(const CacheKey& key, std::int32_t index) {
+    std::size_t i = home(key);
+    while (slots_[i].index >= 0) i = (i + 1) & (slots_.size() - 1);
+    slots_[i] = Slot{key, index};
+  }
+  void grow() {
+    std::vector<Slot> old(2 * slots_.size(), Slot{});
+    old.swap(slots_);
+    for (const Slot& sl : old) {
+      if (sl.index >= 0) place(sl.key, sl.index);
+    }
+  }
+  static constexpr std::size_t kChunk = 64;
+  LocalParts& value(std::size_t index) const { return chunks_[index / kChunk][index % kChunk]; }
+  std::vector<Slot> slots_;
+  std::vector<std::unique_ptr<LocalParts[]>> chunks_;
+  std::size_t count_ = 0;
+};
 
 int floor_div_int(double v) { return static_cast<int>(std::floor(v)); }
+
+// std::llround(v) (halves away from zero) without the library call, for
+// |v| < 2^62: v - trunc(v) is exact there. The cache key below is computed
+// for every pair of every sample.
+std::int64_t round_to_int64(double v) {
+  auto t = static_cast<std::int64_t>(v);  // towards zero
+  const double frac = v - static_cast<double>(t);
+  if (frac >= 0.5) ++t;
+  if (frac <= -0.5) --t;
+  return t;
+}
 
 // A drive built in code skips the loader's check: a rigid mesh has no finite
 // stiffness, so refuse it rather than return inf.
@@ -97,7 +162,8 @@ struct MeshStiffnessModel::Impl {
   int slots = 1;
   std::vector<MappedSpall> spalls;
 
-  explicit Impl(const Drive& d) : drive(d), geo(build_mesh_geometry(d)), pair(checked(d), geo) {
+  explicit Impl(const Drive& d) : Impl(d, build_mesh_geometry(d)) {}
+  Impl(const Drive& d, MeshGeometry g) : drive(d), geo(std::move(g)), pair(checked(d), geo) {
     warnings = geo.warnings;
     warnings.insert(warnings.end(), pair.warnings().begin(), pair.warnings().end());
     const Effects& fx = drive.effects;
@@ -207,7 +273,11 @@ struct MeshStiffnessModel::Impl {
     return (r * sa * sa + geo.profile_shift_length + geo.clearance - h) / sa;
   }
 
-  int pinion_tooth_of(int rack_j) const { return ((rack_j % z) + z) % z; }
+  // j mod z in 0..z-1 (one integer division, not two: per pair and sample).
+  int pinion_tooth_of(int rack_j) const {
+    const int r = rack_j % z;
+    return r < 0 ? r + z : r;
+  }
 
   const MappedSpall* spall_for(Member member, int tooth) const {
     for (const MappedSpall& m : spalls) {
@@ -229,6 +299,7 @@ struct MeshStiffnessModel::Impl {
     out.spalled = lost_width > 0;
     out.teeth = pair.teeth(s, ps ? &ps->band : nullptr, rs ? &rs->band : nullptr, out.face_width);
     out.contact = pair.contact_law(s, out.face_width);
+    out.contact_at_load = out.contact.at(drive.load.force);
     if ((ps || rs) && !out.spalled) {
       const PairTeeth healthy = pair.teeth(s, nullptr, nullptr, out.face_width);
       out.spalled = healthy.pinion.total() != out.teeth.pinion.total() ||
@@ -242,10 +313,12 @@ struct MeshStiffnessModel::Impl {
     const bool rs = !spalls.empty() && spall_for(Member::kRack, j) != nullptr;
     // Samples on the uniform grid land on s = A0 + k pb/N up to rounding; a
     // key on a 1e-9 p_b grid merges those and nothing physically distinct.
-    CacheKey key{static_cast<std::int64_t>(std::llround(s / (pb * 1e-9))), ps ? i : -1, rs ? j : -1};
-    auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
-    return cache.emplace(key, local_parts(s, i, j)).first->second;
+    const double grid = s / (pb * 1e-9);
+    const std::int64_t s_key =
+        std::abs(grid) < 0x1p62 ? round_to_int64(grid) : static_cast<std::int64_t>(std::llround(grid));
+    CacheKey key{s_key, ps ? i : -1, rs ? j : -1};
+    if (const LocalParts* hit = cache.find(key)) return *hit;
+    return cache.insert(key, local_parts(s, i, j));
   }
 
   // Whether adjacent pairs load each other beyond the rack beam
@@ -276,8 +349,21 @@ struct MeshStiffnessModel::Impl {
   template <class Parts>
   MeshState state(double X, int side, Parts&& parts_of) const {
     MeshState st;
-    st.travel = X;
     st.pairs.reserve(static_cast<std::size_t>(slots) + 1);
+    state_into(st, X, side, parts_of);
+    return st;
+  }
+
+  // The same into `st`, whose pairs' storage is reused: a curve computes
+  // every sample into one scratch state and so allocates nothing per sample
+  // once the scratch holds the most pairs in mesh.
+  template <class Parts>
+  void state_into(MeshState& st, double X, int side, Parts&& parts_of) const {
+    st.travel = X;
+    st.stiffness = 0;
+    st.approach = 0;
+    st.local_stiffness = 0;
+    st.pairs.clear();
     std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
@@ -285,10 +371,11 @@ struct MeshStiffnessModel::Impl {
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
     for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
-      PairState p;
+      PairState& p = st.pairs.emplace_back();  // built in place: no copy of the pair
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);
-      p.slot = ((j % slots) + slots) % slots;
+      p.slot = j % slots;
+      if (p.slot < 0) p.slot += slots;
       p.s = std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol);
       p.s = std::clamp(p.s, s_start, s_end);
       p.x = x_of(j, X);
@@ -303,17 +390,15 @@ struct MeshStiffnessModel::Impl {
       p.rack_foundation = lp.teeth.rack_foundation;
       p.spalled = lp.spalled;
       if (relief) p.relief = relief->at(p.s);
-      p.hertz = lp.contact.at(drive.load.force);
-      if (st.pairs.size() < 2) law2[st.pairs.size()] = lp.contact;
-      st.pairs.push_back(p);
+      p.hertz = lp.contact_at_load;
+      if (st.pairs.size() <= 2) law2[st.pairs.size() - 1] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
         st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2)) {
-      return st;
+      return;
     }
     solve(st);
     if (pair.contact_depends_on_force() && st.pairs.size() > 1) load_dependent_contact(st, parts_of);
-    return st;
   }
 
   // The double-pair zone with a load-dependent contact term and no relief
@@ -561,6 +646,22 @@ struct MeshStiffnessModel::Impl {
       st.stiffness = k;
       return;
     }
+    if (n == 1) {
+      // One pair in mesh (every single-pair zone): the Cholesky solve below
+      // on the 1 x 1 matrix c is l = sqrt(c), f = (1 / l) / l, written out
+      // with the same operations so that K keeps its last bits.
+      PairState& p = st.pairs[0];
+      const double c = p.local() + p.body;
+      if (c > 0) {
+        const double l = std::sqrt(c);
+        const double K = (1.0 / l) / l;
+        if (K > 0 && std::isfinite(K)) {
+          st.stiffness = K;
+          p.load_share = 1.0;
+          return;
+        }
+      }
+    }
     // One beam shared by all pairs, and the pairs' own coupling:
     // C = diag(c_j) + C_b + C_pairs; K = 1^T C^-1 1.
     // Contact is unilateral (docs/models/mesh.md): the beam can carry a contact
@@ -645,6 +746,8 @@ struct MeshStiffnessModel::Impl {
 };
 
 MeshStiffnessModel::MeshStiffnessModel(const Drive& drive) : impl_(std::make_unique<Impl>(drive)) {}
+MeshStiffnessModel::MeshStiffnessModel(const Drive& drive, MeshGeometry geometry)
+    : impl_(std::make_unique<Impl>(drive, std::move(geometry))) {}
 MeshStiffnessModel::~MeshStiffnessModel() = default;
 MeshStiffnessModel::MeshStiffnessModel(MeshStiffnessModel&&) noexcept = default;
 MeshStiffnessModel& MeshStiffnessModel::operator=(MeshStiffnessModel&&) noexcept = default;
@@ -665,7 +768,7 @@ std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const 
   return impl_->breakpoints(lo, hi);
 }
 
-StiffnessCurve MeshStiffnessModel::curve() const {
+StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
   const Impl& im = *impl_;
   StiffnessCurve out;
   out.warnings = im.warnings;
@@ -673,8 +776,7 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   const double l = im.span;
   const int N = im.drive.numerics.positions_per_period;
   const double dX = im.pitch / N;
-  LocalCache cache;
-  cache.reserve(static_cast<std::size_t>(4 * N + 64));
+  LocalCache cache(static_cast<std::size_t>(4 * N + 64));
   auto parts = [&](double s, int i, int j) -> const LocalParts& { return im.cached_parts(cache, s, i, j); };
 
   out.breakpoints = im.breakpoints(0.0, l);
@@ -688,25 +790,51 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   const int n_uniform = static_cast<int>(std::floor(l / dX + 1e-9));
   probes.reserve(static_cast<std::size_t>(n_uniform) + 2 * out.breakpoints.size() + 4);
   const double tol = 1e-9 * im.pitch;
+  // Asked in increasing X: a cursor instead of a binary search per probe
+  // (the first breakpoint >= X - tol, as std::lower_bound would find).
+  auto next_break = out.breakpoints.begin();
   auto near_break = [&](double X) {
-    auto it = std::lower_bound(out.breakpoints.begin(), out.breakpoints.end(), X - tol);
-    return it != out.breakpoints.end() && *it <= X + tol;
+    while (next_break != out.breakpoints.end() && *next_break < X - tol) ++next_break;
+    return next_break != out.breakpoints.end() && *next_break <= X + tol;
   };
   for (int i = 0; i <= n_uniform; ++i) {
     const double X = std::min(i * dX, l);
     if (!near_break(X)) probes.push_back({X, X >= l - tol ? -1 : +1});
   }
   if (l - n_uniform * dX > tol && !near_break(l)) probes.push_back({l, -1});
+  // The uniform probes and those at the (sorted, distinct) breakpoints are
+  // each in order already: merge them (sorting the whole list cost 9 % of a
+  // curve).
+  std::vector<Probe> at_breaks;
+  at_breaks.reserve(2 * out.breakpoints.size());
   for (double xb : out.breakpoints) {
-    if (xb > tol) probes.push_back({xb, -1});
-    if (xb < l - tol) probes.push_back({xb, +1});
+    if (xb > tol) at_breaks.push_back({xb, -1});
+    if (xb < l - tol) at_breaks.push_back({xb, +1});
   }
-  std::sort(probes.begin(), probes.end(), [](const Probe& a, const Probe& c) {
+  const auto probe_less = [](const Probe& a, const Probe& c) {
     return a.X < c.X || (a.X == c.X && a.side < c.side);
-  });
+  };
+  {
+    std::vector<Probe> merged(probes.size() + at_breaks.size());
+    std::merge(probes.begin(), probes.end(), at_breaks.begin(), at_breaks.end(), merged.begin(), probe_less);
+    probes = std::move(merged);
+  }
 
+  // One scratch state for every evaluation of this curve (its pairs'
+  // storage is reused). With relief the bisection below compares the pairs
+  // of neighbouring samples, so those keep them until the end.
+  MeshState scratch;
+  scratch.pairs.reserve(static_cast<std::size_t>(im.slots) + 1);
+  const bool keep_pairs = detail == CurveDetail::kFull || im.relief;
   out.samples.reserve(probes.size());
-  for (const Probe& pr : probes) out.samples.push_back(im.state(pr.X, pr.side, parts));
+  for (const Probe& pr : probes) {
+    if (keep_pairs) {
+      out.samples.push_back(im.state(pr.X, pr.side, parts));
+    } else {
+      im.state_into(scratch, pr.X, pr.side, parts);
+      out.samples.push_back(MeshState{scratch.travel, scratch.stiffness, scratch.approach, scratch.local_stiffness, {}});
+    }
+  }
 
   if (im.relief) {
     // With relief the tangent stiffness jumps where a relieved pair starts or
@@ -823,7 +951,10 @@ StiffnessCurve MeshStiffnessModel::curve() const {
   out.travel_at_min = out.samples[i_min].travel;
   out.k_max = out.samples[i_max].stiffness;
   out.travel_at_max = out.samples[i_max].travel;
-  auto k_at = [&](double X) { return im.state(X, 0, parts).stiffness; };
+  auto k_at = [&](double X) {
+    im.state_into(scratch, X, 0, parts);
+    return scratch.stiffness;
+  };
   const double x_tol = 1e-7 * im.pitch;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (piece[i - 1] != piece[i] || piece[i + 1] != piece[i]) continue;
@@ -847,6 +978,9 @@ StiffnessCurve MeshStiffnessModel::curve() const {
     }
   }
   out.k_fluctuation = out.k_mean > 0 ? (out.k_max - out.k_min) / out.k_mean : 0.0;
+  if (detail == CurveDetail::kSummary && im.relief) {
+    for (MeshState& st : out.samples) std::vector<PairState>().swap(st.pairs);
+  }
   return out;
 }
 

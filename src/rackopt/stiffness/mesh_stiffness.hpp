@@ -79,11 +79,25 @@ struct StiffnessCurve {
   std::vector<std::string> warnings;
 };
 
+// What curve() keeps of each sample.
+enum class CurveDetail {
+  kFull,     // every sample with its pairs (the CSV, plots, the FE comparison)
+  kSummary,  // each sample's travel, stiffness, approach and local_stiffness, no
+             // pairs: what the stiffness metrics, the KS aggregates and the
+             // per-period statistics read. Same values as kFull, bit for bit;
+             // a curve without relief then allocates nothing per sample.
+};
+
 class MeshStiffnessModel {
  public:
   // Builds the geometry and the tooth models and checks the spalls. Throws
   // DesignError for an impossible design or fault.
   explicit MeshStiffnessModel(const Drive& drive);
+  // The same with the drive's geometry built already: `geometry` must be
+  // build_mesh_geometry(drive). A caller that needed it anyway saves
+  // building it again: nearly all of the model's construction (the
+  // undercut search), about a tenth of a design with its curve.
+  MeshStiffnessModel(const Drive& drive, MeshGeometry geometry);
   ~MeshStiffnessModel();
   MeshStiffnessModel(MeshStiffnessModel&&) noexcept;
   MeshStiffnessModel& operator=(MeshStiffnessModel&&) noexcept;
@@ -102,8 +116,10 @@ class MeshStiffnessModel {
   // per mesh period plus every discontinuity (including, with relief, the
   // load switches of relieved pairs); min, max (refined inside smooth
   // pieces) and mean (piecewise cubic quadrature) do not depend on where the
-  // uniform samples fall.
-  StiffnessCurve curve() const;
+  // uniform samples fall. CurveDetail::kSummary leaves every sample's
+  // `pairs` empty (k_min, k_max, k_mean, the breakpoints and the samples'
+  // own values are the same).
+  StiffnessCurve curve(CurveDetail detail = CurveDetail::kFull) const;
 
   // Travel positions in [lo, hi] where the number of pairs changes or a
   // contact crosses a support.

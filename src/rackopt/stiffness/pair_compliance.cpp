@@ -185,15 +185,10 @@ double PairCompliance::contact(double s, double force, double face_width, double
   return 0.0;
 }
 
-double ContactLaw::at(double force) const {
-  if (slope == 0) return c_ref;
-  const double c = c_ref - slope * std::log(std::max(force, floor) / f_ref);
-  if (!(c > 0)) {
-    // As hertz_weber_banaschek_compliance: the strip has outgrown the teeth.
-    throw DesignError("hertz_out_of_range", "Weber-Banaschek contact strip at " + std::to_string(force) +
-                                                " N is wider than the teeth: outside the contact model");
-  }
-  return c;
+void ContactLaw::strip_too_wide(double force) {
+  // As hertz_weber_banaschek_compliance: the strip has outgrown the teeth.
+  throw DesignError("hertz_out_of_range", "Weber-Banaschek contact strip at " + std::to_string(force) +
+                                              " N is wider than the teeth: outside the contact model");
 }
 
 ContactLaw PairCompliance::contact_law(double s, double face_width, double rack_height) const {

@@ -14,6 +14,8 @@
 //   double c = t.total() + pair.contact(s, force);        // m/N at the pair force
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,10 +53,22 @@ struct ContactLaw {
   double slope = 0;    // -dc/d ln f [m/N]
   double floor = 0;    // forces below it count as it [N]
   // Throws DesignError "hertz_out_of_range" where the law leaves no
-  // positive compliance (a strip wider than the teeth).
-  double at(double force) const;
+  // positive compliance (a strip wider than the teeth). Defined here: the
+  // two-pair load sharing calls it several times per curve sample.
+  double at(double force) const {
+    if (slope == 0) return c_ref;
+    // f_ref is 1 N for any contact narrower than 1 m (contact_law: the
+    // larger of 1 N and the floor of 1 N per metre of width). Dividing by
+    // it is exact, so skipping it changes nothing but the time: it sits on
+    // the critical path of the two-pair Newton iteration.
+    const double f = std::max(force, floor);
+    const double c = c_ref - slope * std::log(f_ref == 1.0 ? f : f / f_ref);
+    if (!(c > 0)) strip_too_wide(force);
+    return c;
+  }
   // -dc/d ln f at `force` (0 below the floor).
   double slope_at(double force) const { return force > floor ? slope : 0.0; }
+  [[noreturn]] static void strip_too_wide(double force);
 };
 
 class PairCompliance {

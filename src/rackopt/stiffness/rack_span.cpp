@@ -28,6 +28,20 @@ double require_positive(double value, const char* name) {
   return value;
 }
 
+// The failures of the checks below, out of line: the checks run several
+// times per curve sample, their messages never in a valid model.
+[[noreturn, gnu::noinline, gnu::cold]] void abscissa_outside(double a, double l) {
+  std::ostringstream os;
+  os << "contact abscissa a = " << a << " m is outside the span [0, " << l << "] m";
+  fail(os.str());
+}
+
+[[noreturn, gnu::noinline, gnu::cold]] void heights_not_finite(double e_j, double e_k) {
+  std::ostringstream os;
+  os << "contact heights must be finite, got e_j = " << e_j << ", e_k = " << e_k;
+  fail(os.str());
+}
+
 }  // namespace
 
 RackSpanCompliance::RackSpanCompliance(const RackSpec& rack, double pressure_angle,
@@ -64,14 +78,10 @@ RackSpanCompliance::RackSpanCompliance(const RackSpec& rack, double pressure_ang
   }
 }
 
-double RackSpanCompliance::checked_abscissa(double a) const {
+inline double RackSpanCompliance::checked_abscissa(double a) const {
   // a = x - k*span can miss the hinge by a rounding error; accept that much.
   const double tolerance = 1e-9 * l_;
-  if (!std::isfinite(a) || a < -tolerance || a > l_ + tolerance) {
-    std::ostringstream os;
-    os << "contact abscissa a = " << a << " m is outside the span [0, " << l_ << "] m";
-    fail(os.str());
-  }
+  if (!std::isfinite(a) || a < -tolerance || a > l_ + tolerance) abscissa_outside(a, l_);
   return std::clamp(a, 0.0, l_);
 }
 
@@ -79,11 +89,7 @@ RackSpanInfluence RackSpanCompliance::parts(double a_j, double e_j, double a_k,
                                             double e_k) const {
   double x = checked_abscissa(a_j);
   double xi = checked_abscissa(a_k);
-  if (!std::isfinite(e_j) || !std::isfinite(e_k)) {
-    std::ostringstream os;
-    os << "contact heights must be finite, got e_j = " << e_j << ", e_k = " << e_k;
-    fail(os.str());
-  }
+  if (!std::isfinite(e_j) || !std::isfinite(e_k)) heights_not_finite(e_j, e_k);
   // Without the couple term the tooth height plays no role in load or response.
   double ex = couple_ ? e_j : 0.0;
   double exi = couple_ ? e_k : 0.0;
@@ -114,6 +120,26 @@ RackSpanInfluence RackSpanCompliance::parts(double a_j, double e_j, double a_k,
 
 double RackSpanCompliance::influence(double a_j, double e_j, double a_k, double e_k) const {
   return parts(a_j, e_j, a_k, e_k).total();
+}
+
+double RackSpanCompliance::self(double a, double e) const {
+  // parts(a, e, a, e) term by term, written the same way so that the sum
+  // keeps its last bits (tests/stiffness/rack_span_test.cpp checks it).
+  const double x = checked_abscissa(a);
+  if (!std::isfinite(e)) heights_not_finite(e, e);
+  const double ex = couple_ ? e : 0.0;
+  namespace hb = hinged_beam;
+  const double s = s_, c = c_, l = l_;
+  const double vertical = s * s * inv_EI_ * hb::bending_deflection_per_force(x, x, l);
+  const double couple = c * c * ex * ex * inv_EI_ * hb::bending_rotation_per_couple(x, x, l);
+  const double coupling = s * c * inv_EI_ *
+                          (ex * hb::bending_deflection_per_couple(x, x, l) +
+                           ex * hb::bending_rotation_per_force(x, x, l));
+  const double axial = c * c * inv_EA_ *
+                       (pin_pin_ ? hb::axial_displacement_pin_pin(x, x, l) : hb::axial_displacement_pin_roller(x, x));
+  const double shear = s * s * inv_kGA_ * hb::shear_deflection_per_force(x, x, l);
+  const double shear_couple = c * c * ex * ex * inv_kGA_ * hb::shear_rotation_per_couple(l);
+  return vertical + couple + coupling + axial + shear + shear_couple;
 }
 
 }  // namespace rackopt

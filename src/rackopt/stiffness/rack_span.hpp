@@ -62,8 +62,9 @@ class RackSpanCompliance {
   // influence(...) exactly.
   RackSpanInfluence parts(double a_j, double e_j, double a_k, double e_k) const;
 
-  // influence(a, e, a, e).
-  double self(double a, double e) const { return influence(a, e, a, e); }
+  // influence(a, e, a, e), bit for bit (the same expressions without the
+  // ordering of two contacts; one per pair and curve sample).
+  double self(double a, double e) const;
 
   double span() const { return l_; }
 
