@@ -1,0 +1,153 @@
+// `mpirun -np 2 rackopt run`: the same record and results as a serial run,
+// and a rank that cannot start is named. Skipped when the build has no MPI.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <regex>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/cli_process.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
+
+namespace {
+
+using namespace rackopt::test_support;
+namespace fs = std::filesystem;
+
+#if defined(RACKOPT_WITH_MPI) && defined(RACKOPT_MPIRUN)
+constexpr bool kHaveMpi = true;
+const std::string kMpirun = RACKOPT_MPIRUN;
+#else
+constexpr bool kHaveMpi = false;
+const std::string kMpirun;
+#endif
+
+// As root (CI) and with more ranks than free cores, OpenMPI needs these.
+const std::string kMpiEnv = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1";
+
+struct Shell {
+  int code = -1;
+  std::string output;
+};
+
+// Runs `command` from the source folder under a time limit, output merged.
+Shell shell(const std::string& command, int seconds = 300) {
+  const std::string log = scratch_dir("mpi_shell") + "/output.log";
+  const std::string full = "cd '" + std::string(RACKOPT_SOURCE_DIR) + "' && timeout -s KILL " +
+                           std::to_string(seconds) + " sh -c '" + command + "' >'" + log + "' 2>&1";
+  Shell r;
+  const int status = std::system(full.c_str());
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = read_text(log);
+  return r;
+}
+
+// evaluations.csv without the per-evaluation wall time.
+std::vector<std::string> record_rows(const std::string& out_dir) {
+  std::istringstream in(read_text(out_dir + "/evaluations.csv"));
+  std::vector<std::string> rows;
+  std::string line;
+  std::size_t seconds_column = std::string::npos;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      if (c == ',' && !quoted) {
+        cells.push_back(cell);
+        cell.clear();
+      } else {
+        cell += c;
+      }
+    }
+    cells.push_back(cell);
+    if (seconds_column == std::string::npos) {
+      for (std::size_t i = 0; i < cells.size(); ++i)
+        if (cells[i] == "seconds") seconds_column = i;
+    }
+    std::string row;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (i != seconds_column) row += cells[i] + ",";
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(MpiCli, TwoRanksGiveTheRecordOfASerialRun) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  struct Case {
+    std::string study, sets;
+  };
+  const std::vector<Case> cases = {
+      {"studies/spall_severity_sweep.yaml", ""},  // a sweep: chunks of designs
+      {"studies/ship_lift_four_objectives.yaml",  // NSGA-II: generations
+       "--set solver.population=24 --set solver.max_evaluations=192 --set pareto.points=8"},
+      {"studies/rack_railway_sizing.yaml",  // Ipopt: batches of finite-difference probes
+       "--set solver.library=ipopt --set solver.max_evaluations=40"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.study);
+    const std::string serial = scratch_path("mpi_serial"), ranks = scratch_path("mpi_ranks");
+    const Shell s = shell(std::string(RACKOPT_CLI) + " run " + c.study + " " + c.sets + " --out " + serial);
+    ASSERT_EQ(s.code, 0) << s.output;
+    const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + c.study + " " +
+                          c.sets + " --out " + ranks);
+    ASSERT_EQ(m.code, 0) << m.output;
+    const auto a = record_rows(serial), b = record_rows(ranks);
+    ASSERT_GT(a.size(), 10u);
+    EXPECT_EQ(a, b);
+    // Rank 0 alone writes: one report, one store.
+    EXPECT_TRUE(fs::exists(ranks + "/report.md"));
+    EXPECT_TRUE(fs::exists(ranks + "/evaluations.sqlite"));
+  }
+}
+
+TEST(MpiCli, ARankThatCannotLoadTheStudyIsNamedAndNothingIsWritten) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_refused");
+  // Two programs in one job (MPMD): rank 1 is given a study that is not there.
+  const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 1 " + std::string(RACKOPT_CLI) +
+                        " run studies/spall_severity_sweep.yaml --out " + out + " : -np 1 " + RACKOPT_CLI +
+                        " run studies/no_such_study.yaml --out " + out);
+  EXPECT_EQ(m.code, 1) << m.output;
+  EXPECT_NE(m.output.find("MPI rank 1 could not start"), std::string::npos) << m.output;
+  EXPECT_NE(m.output.find("no_such_study.yaml"), std::string::npos) << m.output;
+  EXPECT_FALSE(fs::exists(out + "/evaluations.sqlite"));
+}
+
+TEST(MpiCli, AKilledRunResumesWithNothingRepeatedAndNothingLost) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string serial = scratch_path("mpi_kill_serial"), ranks = scratch_path("mpi_kill_ranks");
+  // NSGA-II, about 4 ms a design: the kill lands inside the run.
+  const std::string study =
+      "studies/ship_lift_four_objectives.yaml --set solver.population=24 --set solver.max_evaluations=960 "
+      "--set pareto.points=8";
+  ASSERT_EQ(shell(std::string(RACKOPT_CLI) + " run " + study + " --out " + serial).code, 0);
+  // Killed (SIGKILL, the whole job) once rank 0 has committed rows: the
+  // store's write-ahead log has grown by a few pages.
+  const std::string wal = ranks + "/evaluations.sqlite-wal";
+  const Shell killed = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + study +
+                             " --out " + ranks + " & job=$!; " + "for i in $(seq 600); do [ -s " + wal +
+                             " ] && [ $(stat -c %s " + wal + ") -gt 65536 ] && break; sleep 0.05; done; kill -9 $job; " +
+                             "pkill -9 -f \"" + ranks + "\"; wait $job; true");
+  (void)killed;
+  const Shell resumed =
+      shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + study + " --out " + ranks +
+            " --resume");
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  // The kill came in the middle: some designs were in the store, some not.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(resumed.output, m, std::regex(R"(evaluations: (\d+) \(\d+ failed, (\d+) from the store\))")))
+      << resumed.output;
+  const long total = std::stol(m[1]), reused = std::stol(m[2]);
+  EXPECT_GT(reused, 0);
+  EXPECT_LT(reused, total);
+  EXPECT_EQ(record_rows(serial), record_rows(ranks));
+}
+
+}  // namespace
