@@ -350,7 +350,7 @@ TEST(OutputGuarantees, ProgressLineEndsDoneAndFitsTheTerminal) {
                        << "variables:\n  rack.span: {lower: 1.2 m, upper: 3 m}\n"
                        << "  pinion.pressure_angle: {lower: 17 deg, upper: 25 deg}\n"
                        << "objectives:\n  - {metric: stiffness_fluctuation, scale: 1}\n"
-                       << "sweep: {method: grid, levels: 14}\n"
+                       << "sweep: {method: grid, levels: 22}\n"
                        << "output: {plots: off, report: off, stiffness_curve: off}\n";
   const CliResult r = run_cli("run '" + study + "' --progress --threads 1 --out " + dir + "/out", {.env = "COLUMNS=52"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -376,7 +376,7 @@ TEST(OutputGuarantees, ProgressLineEndsDoneAndFitsTheTerminal) {
     EXPECT_LE(t.size(), 51u) << "[" << l << "]";
   }
   const std::string last = bar_lines.back();
-  EXPECT_NE(last.find("196/196 evaluations"), std::string::npos) << last;
+  EXPECT_NE(last.find("484/484 evaluations"), std::string::npos) << last;  // 22 x 22
   EXPECT_NE(last.find("done in"), std::string::npos) << last;
   EXPECT_EQ(last.find("left"), std::string::npos) << last;
 }
