@@ -31,7 +31,10 @@ std::string check_numbers(const SolverSettings& s) {
 
 // The library's own settings: known keys, in range, whole where they must be.
 std::optional<SolverSettingsRefusal> check_options(const SolverSettings& s, const SolverBackend& backend) {
-  for (const auto& [key, value] : s.options) {
+  for (const auto& entry : s.options) {
+    // Named copies, not a structured binding: the lambda below captures the key.
+    const std::string& key = entry.first;
+    const double value = entry.second;
     const auto& declared = backend.options();
     const auto it = std::find_if(declared.begin(), declared.end(), [&](const BackendOption& o) { return o.key == key; });
     if (it == declared.end()) {
