@@ -217,6 +217,34 @@ bool dominates_min(const std::vector<double>& a, const std::vector<double>& b) {
   return strictly;
 }
 
+// Every front point feasible, inside the bounds, its objectives what our
+// own evaluation of the design gives, and no point dominating another; the
+// points' minimized objective vectors.
+std::vector<std::vector<double>> checked_front(const StudySpec& spec, const StudyResult& r) {
+  std::vector<std::vector<double>> f;
+  for (std::size_t i = 0; i < r.front.size(); ++i) {
+    const DesignResult& p = r.front[i];
+    const std::string what = "front point " + std::to_string(i) + " (" + p.label + ")";
+    EXPECT_TRUE(p.feasible) << what;
+    expect_inside_bounds(spec, p.x, what);
+    const metrics::MetricValues v = evaluate_ourselves(spec, p.x);
+    expect_constraints_hold(spec, v, what);
+    for (std::size_t k = 0; k < spec.objectives.size(); ++k) {
+      const metrics::MetricValue& m = value_of(v, spec.objectives[k].label);
+      EXPECT_TRUE(m.ok) << what;
+      EXPECT_EQ(m.value, p.objectives[k]) << what << ": " << m.label;
+    }
+    f.push_back(minimized(spec, p));
+  }
+  for (std::size_t i = 0; i < f.size(); ++i)
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (i != j) {
+        EXPECT_FALSE(dominates_min(f[j], f[i])) << "front point " << j << " dominates " << i;
+      }
+    }
+  return f;
+}
+
 TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   // The shipped study with a smaller budget: 7 points (3 anchors and a 2 x 2
   // eps grid per module value), 15 evaluations per sub-problem.
@@ -229,27 +257,7 @@ TEST(StudyAcceptance, ShipLiftFrontIsFeasibleNonDominatedAndSpread) {
   std::printf("ship lift front: %zu points, %zu evaluations, status %s\n", r.front.size(), r.evaluations,
               std::string(to_string(r.status)).c_str());
 
-  std::vector<std::vector<double>> f;
-  for (std::size_t i = 0; i < r.front.size(); ++i) {
-    const DesignResult& p = r.front[i];
-    const std::string what = "front point " + std::to_string(i) + " (" + p.label + ")";
-    EXPECT_TRUE(p.feasible) << what;
-    expect_inside_bounds(spec, p.x, what);
-    const metrics::MetricValues v = evaluate_ourselves(spec, p.x);
-    expect_constraints_hold(spec, v, what);
-    for (std::size_t k = 0; k < spec.objectives.size(); ++k) {
-      const metrics::MetricValue& m = value_of(v, spec.objectives[k].label);
-      ASSERT_TRUE(m.ok) << what;
-      EXPECT_EQ(m.value, p.objectives[k]) << what << ": " << m.label;
-    }
-    f.push_back(minimized(spec, p));
-  }
-  for (std::size_t i = 0; i < f.size(); ++i)
-    for (std::size_t j = 0; j < f.size(); ++j) {
-      if (i != j) {
-        EXPECT_FALSE(dominates_min(f[j], f[i])) << "front point " << j << " dominates " << i;
-      }
-    }
+  const std::vector<std::vector<double>> f = checked_front(spec, r);
 
   // Spread against an ideal and nadir found without the front solver: the
   // non-dominated set of a coarse grid over the same box (4 levels of case
@@ -310,27 +318,7 @@ TEST(StudyAcceptance, FourObjectiveShipLiftFrontByNsga2) {
   const StudyResult r = run_study(spec, options_in(scratch_path("ship_lift_four"), 2));
   ASSERT_EQ(r.front.size(), 12u) << r.status;
   EXPECT_LE(r.evaluations, 480u);
-  std::vector<std::vector<double>> f;
-  for (std::size_t i = 0; i < r.front.size(); ++i) {
-    const DesignResult& p = r.front[i];
-    const std::string what = "front point " + std::to_string(i) + " (" + p.label + ")";
-    EXPECT_TRUE(p.feasible) << what;
-    expect_inside_bounds(spec, p.x, what);
-    const metrics::MetricValues v = evaluate_ourselves(spec, p.x);
-    expect_constraints_hold(spec, v, what);
-    for (std::size_t k = 0; k < spec.objectives.size(); ++k) {
-      const metrics::MetricValue& m = value_of(v, spec.objectives[k].label);
-      ASSERT_TRUE(m.ok) << what;
-      EXPECT_EQ(m.value, p.objectives[k]) << what << ": " << m.label;
-    }
-    f.push_back(minimized(spec, p));
-  }
-  for (std::size_t i = 0; i < f.size(); ++i)
-    for (std::size_t j = 0; j < f.size(); ++j) {
-      if (i != j) {
-        EXPECT_FALSE(dominates_min(f[j], f[i])) << "front point " << j << " dominates " << i;
-      }
-    }
+  const std::vector<std::vector<double>> f = checked_front(spec, r);
   // supports_per_metre = 1/span: the front spreads over at least half of
   // its closed-form range 1/1.6 .. 1/0.6 per metre.
   double lo = INFINITY, hi = -INFINITY;

@@ -367,6 +367,14 @@ const Jacobian& EvaluationTracker::jacobian(const double* x_in) {
   return jacobian_;
 }
 
+std::optional<SolverStatus> EvaluationTracker::ending_status() const {
+  if (evaluations_ > 0 && !any_ok()) return SolverStatus::kAllFailed;
+  if (evaluations_ > 0 && !any_feasible()) return SolverStatus::kNoFeasiblePoint;
+  // A halt by an error was rethrown by the caller; every other halt has a status.
+  if (halt_ != Halt::kNone) return halt_status(halt_).value_or(SolverStatus::kSolverFailed);
+  return std::nullopt;
+}
+
 void EvaluationTracker::fill_result(SolverResult& result) const {
   if (has_feasible_) {
     result.x = best_x_;

@@ -141,6 +141,10 @@ class EvaluationTracker {
   void fill_result(SolverResult& result) const;
   bool any_ok() const { return ok_evaluations_ > 0; }
   bool any_feasible() const { return has_feasible_; }
+  // How the run ended when the tracker alone can tell, most important
+  // first: kAllFailed, kNoFeasiblePoint, then the status of a halt (budget,
+  // time, stop, request cap); nullopt when the solver's own end decides.
+  std::optional<SolverStatus> ending_status() const;
 
  private:
   static constexpr std::size_t kMemoLimit = 200000;

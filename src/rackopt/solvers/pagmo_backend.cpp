@@ -330,12 +330,8 @@ class PagmoBackend final : public SolverBackend {
     tracker.fill_result(result);
     result.solver_message = std::string(m.name) + ": population " + std::to_string(pop) + ", " +
                             std::to_string(end.generations) + " generations";
-    if (result.evaluations > 0 && !tracker.any_ok()) {
-      result.status = SolverStatus::kAllFailed;
-    } else if (result.evaluations > 0 && !tracker.any_feasible()) {
-      result.status = SolverStatus::kNoFeasiblePoint;
-    } else if (tracker.halt() != Halt::kNone) {
-      result.status = halt_status(tracker.halt()).value_or(SolverStatus::kSolverFailed);
+    if (const auto ended = tracker.ending_status()) {
+      result.status = *ended;
     } else if (end.stalled) {
       result.status = SolverStatus::kConverged;
       result.solver_message += " (no better feasible point in the last " +

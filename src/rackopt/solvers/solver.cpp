@@ -193,13 +193,8 @@ SolverResult run_multistart(const Problem& problem, std::span<const double> x0, 
                              std::to_string(result.evaluations) +
                              " were new; it kept revisiting evaluated points (cycling)";
 
-  if (result.evaluations > 0 && !tracker.any_ok()) {
-    result.status = SolverStatus::kAllFailed;
-  } else if (result.evaluations > 0 && !tracker.any_feasible()) {
-    result.status = SolverStatus::kNoFeasiblePoint;
-  } else if (tracker.halt() != Halt::kNone) {
-    // A halt by an error was rethrown above; every other halt has a status.
-    result.status = halt_status(tracker.halt()).value_or(SolverStatus::kSolverFailed);
+  if (const auto ended = tracker.ending_status()) {
+    result.status = *ended;
   } else {
     const bool any_converged = std::any_of(outcomes.begin(), outcomes.end(), [](const StartOutcome& o) {
       return o.status == SolverStatus::kConverged;
