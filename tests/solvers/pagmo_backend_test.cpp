@@ -224,7 +224,7 @@ TEST_P(PopulationMinimize, RefusesMultistartAndFrontAlgorithmsInMinimize) {
   EXPECT_THROW(rs::minimize(rosenbrock(), std::vector<double>{0, 0}, s), std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(Pagmo, PopulationMinimize, ::testing::Values("cmaes", "sade"));
+INSTANTIATE_TEST_SUITE_P(Pagmo, PopulationMinimize, ::testing::Values("cmaes", "sade", "gaco"));
 
 TEST(PagmoMinimize, CmaesSolvesRosenbrock) {
   // Minimum 0 at (1, 1).

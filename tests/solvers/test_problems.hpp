@@ -28,12 +28,19 @@ class LambdaProblem : public Problem {
   std::size_t num_objectives() const override { return no_; }
   std::size_t num_inequality() const override { return ni_; }
   std::size_t num_equality() const override { return ne_; }
+  std::size_t num_integer() const override { return nix_; }
   Evaluation evaluate(std::span<const double> x) const override { return fn_(x); }
+  // The last n variables whole-valued (Problem::num_integer).
+  LambdaProblem& with_integers(std::size_t n) {
+    nix_ = n;
+    return *this;
+  }
 
  private:
   std::vector<double> lower_, upper_;
   Fn fn_;
   std::size_t ni_, ne_, no_;
+  std::size_t nix_ = 0;
 };
 
 inline Evaluation ok(double f, std::vector<double> ineq = {}, std::vector<double> eq = {}) {

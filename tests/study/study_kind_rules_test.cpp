@@ -110,6 +110,41 @@ TEST(StudyKindRules, SolverShapeCountsContinuousVariablesAndConstraintSides) {
 
 // A spec built in code meets the same rule, with the same words, before any
 // file is written.
+TEST(StudyKindRules, DiscreteVariablesAreIntegersOnlyForAlgorithmsThatSearchThem) {
+  StudySpec s = optimize_spec();
+  s.variables.push_back(discrete("pinion.module", {0.02, 0.025, 0.03}));
+  s.variables.push_back(discrete("pinion.face_width", {0.1}));  // one value: fixed, never a solver variable
+  s.max_discrete_combinations = 2;
+  // Enumerated (COBYLA): three combinations are over the limit, named.
+  ASSERT_FALSE(searches_discrete_as_integers(s));
+  auto v = check_study_kind_rules(s);
+  ASSERT_TRUE(v);
+  EXPECT_EQ(v->part, StudyRulePart::kVariables);
+  EXPECT_NE(v->message.find("algorithm gaco"), std::string::npos) << v->message;
+  EXPECT_EQ(solver_problem_shape(s).dimension, 1u);
+  // GACO searches the module as an integer: no enumeration, no limit.
+  s.solver.library = "pagmo";
+  s.solver.algorithm = "gaco";
+  s.solver.max_evaluations = 500;
+  EXPECT_TRUE(searches_discrete_as_integers(s));
+  EXPECT_EQ(check_study_kind_rules(s), std::nullopt);
+  const solvers::ProblemShape shape = solver_problem_shape(s);
+  EXPECT_EQ(shape.dimension, 2u);
+  EXPECT_EQ(shape.integer, 1u);
+  // CMA-ES does not: enumerated again.
+  s.solver.algorithm = "cmaes";
+  EXPECT_FALSE(searches_discrete_as_integers(s));
+  // A front: NSGA-II searches integers, MOEA/D does not.
+  StudySpec f = s;
+  f.kind = StudyKind::kPareto;
+  f.objectives.push_back(objective("supports_per_metre"));
+  f.pareto.method = solvers::Scalarization::kPopulation;
+  f.solver.algorithm = "nsga2";
+  EXPECT_TRUE(searches_discrete_as_integers(f));
+  f.solver.algorithm = "moead";
+  EXPECT_FALSE(searches_discrete_as_integers(f));
+}
+
 TEST(StudyKindRules, TheRunnerRefusesWithTheSameMessage) {
   StudySpec two = optimize_spec();
   two.objectives.push_back(objective("contact_ratio"));

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "rackopt/problem/design_point.hpp"
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/solvers/pareto.hpp"
+#include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study/study_problem.hpp"
 #include "study_test_support.hpp"
 
@@ -26,13 +28,6 @@ std::string bits(const std::vector<double>& x) {
   return k;
 }
 
-
-std::vector<record::RecordedEvaluation> rows_of(const StudyResult& r, const StudySpec& spec) {
-  StudyProblem p(spec);
-  auto store = record::EvaluationStore::open(r.database_path, study_fingerprint(spec), p.variable_keys(), true,
-                                             {.fingerprint_format = kStudyFingerprintFormat});
-  return store.all();
-}
 
 // Railway sizing: pressure angle and span, least stiffness fluctuation with a
 // contact ratio of at least 1.3. Fluctuation grows with span and (here) with
@@ -329,6 +324,49 @@ TEST(StudyOptimize, DiscreteEnumerationPicksTheBestCombination) {
   EXPECT_NE(r.best->label.find("combination"), std::string::npos) << r.best->label;
   ASSERT_TRUE(r.best_drive);
   EXPECT_NEAR(r.best_drive->pinion.module, best_module, 1e-12);
+}
+
+TEST(StudyOptimize, GacoSearchesDiscreteVariablesAsIntegersInOneRun) {
+  const std::vector<double> modules = {0.02, 0.025, 0.031831, 0.04};
+  StudySpec s = railway_spec(StudyKind::kOptimize);
+  s.variables = {discrete("pinion.module", modules), continuous("pinion.pressure_angle", 10 * kDeg, 20 * kDeg)};
+  s.objectives = {objective("stiffness_fluctuation")};
+  s.objectives[0].scale = 1;
+  s.constraints = {constraint("contact_ratio", 1.3)};
+  s.max_discrete_combinations = 2;  // enumerating would be refused; one search is not
+  s.solver.library = "pagmo";
+  s.solver.algorithm = "gaco";
+  s.solver.max_evaluations = 400;
+  ASSERT_TRUE(searches_discrete_as_integers(s));
+  const StudyResult r = run_study(s, options_in(scratch_path("gaco_integers")));
+  ASSERT_TRUE(r.best) << r.status;
+  EXPECT_LE(r.evaluations, 401u);  // one budget for every combination, plus the start design
+  EXPECT_NE(std::find(modules.begin(), modules.end(), r.best->x[0]), modules.end()) << r.best->x[0];
+
+  // The enumeration with COBYLA on each module is the reference: the one
+  // search finds the same module and an optimum within 1 %.
+  StudySpec e = s;
+  e.solver = StudySpec{}.solver;
+  e.solver.max_evaluations = 60;
+  e.max_discrete_combinations = 256;
+  ASSERT_FALSE(searches_discrete_as_integers(e));
+  const StudyResult ref = run_study(e, options_in(scratch_path("gaco_integers_ref")));
+  ASSERT_TRUE(ref.best);
+  EXPECT_EQ(r.best->x[0], ref.best->x[0]);
+  EXPECT_LE(r.best->objectives[0], ref.best->objectives[0] * 1.01);
+
+  // Each listed combination is one the search reached, with the run's status,
+  // and no combination twice.
+  ASSERT_FALSE(r.per_combination.empty());
+  EXPECT_LE(r.per_combination.size(), modules.size());
+  std::set<std::string> labels;
+  for (const CombinationOutcome& c : r.per_combination) {
+    EXPECT_TRUE(labels.insert(c.label).second) << c.label;
+    EXPECT_TRUE(c.best || c.least_infeasible) << c.label;
+    const DesignResult& d = c.best ? *c.best : *c.least_infeasible;
+    EXPECT_NE(c.label.find(format_quantity(d.x[0], s.variables[0].kind, s.variables[0].unit)), std::string::npos)
+        << c.label;
+  }
 }
 
 TEST(StudyOptimize, SetupErrorsAreInputErrors) {

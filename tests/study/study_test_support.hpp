@@ -7,6 +7,8 @@
 
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/record/evaluation_store.hpp"
+#include "rackopt/study/study_problem.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/study/study_spec.hpp"
 #include "support/scratch_dir.hpp"
@@ -65,6 +67,14 @@ inline ConstraintSpec constraint(const std::string& text, std::optional<double> 
   c.min = min;
   c.max = max;
   return c;
+}
+
+// Every evaluation a finished study recorded, in record order.
+inline std::vector<record::RecordedEvaluation> rows_of(const StudyResult& r, const StudySpec& spec) {
+  StudyProblem p(spec);
+  auto store = record::EvaluationStore::open(r.database_path, study_fingerprint(spec), p.variable_keys(), true,
+                                             {.fingerprint_format = kStudyFingerprintFormat});
+  return store.all();
 }
 
 // Result folders: a fresh path in this process's scratch folder.

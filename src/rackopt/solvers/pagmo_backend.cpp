@@ -1,6 +1,9 @@
 // The pagmo 2.18 backend: population methods. NSGA-II and MOEA/D find a whole
-// Pareto front in one run; CMA-ES and SADE minimize one objective over the
-// whole box. docs/solvers.md ("pagmo") has the table and the measured fronts.
+// Pareto front in one run; CMA-ES, SADE and GACO minimize one objective over
+// the whole box. NSGA-II and GACO also search whole-valued variables
+// (Problem::num_integer: the index into a list of modules) as such, so a
+// study's discrete variables take one run instead of one per combination.
+// docs/solvers.md ("pagmo") has the table and the measured fronts.
 //
 // Constraints. pagmo's NSGA-II, MOEA/D, CMA-ES and SADE take unconstrained
 // problems only, so the problem they see is penalized with a fixed scheme
@@ -24,9 +27,14 @@
 //    `memory` is set: we evolve one generation at a time (for the stop
 //    request, the budget and the labels), so memory is on;
 //  * CMA-ES leaves the box unless force_bounds is set;
+//  * CMA-ES, SADE and MOEA/D accept a problem with an integer part and then
+//    hand it fractional values: they are refused for such problems;
+//  * GACO keeps at most `ker` solutions and needs a population of at least
+//    that many;
 //  * pagmo reseeds nothing by itself: every seed comes from SolverSettings::seed.
 #include <pagmo/algorithm.hpp>
 #include <pagmo/algorithms/cmaes.hpp>
+#include <pagmo/algorithms/gaco.hpp>
 #include <pagmo/algorithms/moead.hpp>
 #include <pagmo/algorithms/nsga2.hpp>
 #include <pagmo/algorithms/sade.hpp>
@@ -59,6 +67,7 @@ constexpr double kFailedValue = kInfeasibleBase * (2.0 + kMaxViolationShown);
 struct PenalizedProblem {
   EvaluationTracker* tracker = nullptr;
   std::size_t objectives = 1;
+  std::size_t integers = 0;  // the last ones are whole-valued (pagmo's nix)
   double tolerance = 0;
 
   pagmo::vector_double fitness(const pagmo::vector_double& x) const { return penalized(tracker->at(x.data())); }
@@ -79,6 +88,7 @@ struct PenalizedProblem {
     return {tracker->lower(), tracker->upper()};
   }
   pagmo::vector_double::size_type get_nobj() const { return objectives; }
+  pagmo::vector_double::size_type get_nix() const { return integers; }
   std::string get_name() const { return "rackopt penalized problem"; }
 };
 
@@ -100,7 +110,7 @@ struct TrackerBatchEvaluator {
   std::string get_name() const { return "rackopt evaluation tracker"; }
 };
 
-enum class Method { kNsga2, kMoead, kCmaes, kSade };
+enum class Method { kNsga2, kMoead, kCmaes, kSade, kGaco };
 
 struct MethodInfo {
   Method method;
@@ -109,17 +119,30 @@ struct MethodInfo {
   std::size_t min_population;
   std::size_t population_multiple;
   const char* note;
+  bool integers;  // keeps whole-valued variables whole
 };
+
+// GACO's solution archive: its default size, less when the population is
+// smaller (it must hold at most a population).
+constexpr std::size_t kGacoKernel = 63;
 
 const std::vector<MethodInfo>& method_table() {
   static const std::vector<MethodInfo> table = {
       {Method::kNsga2, "nsga2", true, 8, 4,
-       "NSGA-II: non-dominated sorting and crowding, SBX crossover and polynomial mutation; fronts of 2-4 objectives"},
+       "NSGA-II: non-dominated sorting and crowding, SBX crossover and polynomial mutation; fronts of 2-4 "
+       "objectives; discrete variables searched as integers",
+       true},
       {Method::kMoead, "moead", true, 8, 1,
        "MOEA/D: decomposition into Tchebycheff sub-problems on low-discrepancy weights, differential evolution; "
-       "fronts of 2-4 objectives"},
-      {Method::kCmaes, "cmaes", false, 5, 1, "CMA-ES: covariance matrix adaptation evolution strategy, one objective"},
-      {Method::kSade, "sade", false, 7, 1, "SADE: self-adaptive differential evolution (jDE), one objective"},
+       "fronts of 2-4 objectives",
+       false},
+      {Method::kCmaes, "cmaes", false, 5, 1, "CMA-ES: covariance matrix adaptation evolution strategy, one objective",
+       false},
+      {Method::kSade, "sade", false, 7, 1, "SADE: self-adaptive differential evolution (jDE), one objective", false},
+      {Method::kGaco, "gaco", false, 8, 1,
+       "GACO: extended ant colony optimization for mixed-integer problems, one objective; discrete variables "
+       "searched as integers",
+       true},
   };
   return table;
 }
@@ -152,6 +175,7 @@ std::size_t population_size(const SolverBackend& backend, const SolverSettings& 
         p = std::max<std::size_t>(p, 8);
         break;
       case Method::kSade: p = std::max<std::size_t>(12, 5 * dimension); break;
+      case Method::kGaco: p = std::max<std::size_t>(16, 5 * dimension); break;
     }
     p = std::max(p, m.min_population);
     p = (p + m.population_multiple - 1) / m.population_multiple * m.population_multiple;
@@ -180,6 +204,16 @@ pagmo::algorithm make_algorithm(const SolverBackend& backend, const SolverSettin
       return pagmo::algorithm(
           pagmo::cmaes(1u, -1, -1, -1, -1, backend.option(settings, "sigma0"), 0, 0, true, true, seed));
     case Method::kSade: return pagmo::algorithm(pagmo::sade(1u, 2u, 1u, 0, 0, true, seed));
+    case Method::kGaco: {
+      // pagmo's threshold of 1: the greedy q = 0.01 from the first
+      // generation (q = 1 until a threshold of half the budget's generations
+      // ended on a worse optimum of the shipped gantry sizing study, and
+      // made the search depend on the budget).
+      const auto kernel = static_cast<unsigned>(std::min(kGacoKernel, population));
+      pagmo::gaco gaco(1u, kernel, 1.0, 0.0, 0.01, 1u, 7u, 100000u, 100000u, 0.0, true, seed);
+      gaco.set_bfe(pagmo::bfe(TrackerBatchEvaluator{}));
+      return pagmo::algorithm(gaco);
+    }
   }
   throw std::logic_error("unknown pagmo method");
 }
@@ -195,9 +229,10 @@ struct RunEnd {
   bool stalled = false;
 };
 RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const MethodInfo& m, std::size_t objectives,
-              std::size_t population, const std::function<void(std::size_t)>& on_generation) {
+              std::size_t integers, std::size_t population,
+              const std::function<void(std::size_t)>& on_generation) {
   const SolverBackend& backend = pagmo_backend();
-  PenalizedProblem udp{&tracker, objectives, settings.constraint_tolerance};
+  PenalizedProblem udp{&tracker, objectives, integers, settings.constraint_tolerance};
   pagmo::problem prob(udp);
   const auto pop_seed = static_cast<unsigned>(settings.seed * 2654435761u + 17u);
   pagmo::population pop(prob, 0u, pop_seed);
@@ -209,6 +244,10 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
     auto lhs = doe::latin_hypercube(tracker.lower(), tracker.upper(), population - 1, settings.seed);
     first.insert(first.end(), lhs.begin(), lhs.end());
   }
+  // Whole-valued variables start whole: the hypercube's strata of an index
+  // rounded to the nearest entry (x0's are whole already, see whole_x0).
+  for (auto& x : first)
+    for (std::size_t i = x.size() - integers; i < x.size(); ++i) x[i] = std::round(x[i]);
   // guard: a halt (budget, time, stop request) ends the run with every
   // evaluation kept by the tracker; anything else is rethrown by the caller.
   tracker.guard([&] {
@@ -239,12 +278,18 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
   return end;
 }
 
+// x0's whole-valued variables rounded to the nearest whole value (the
+// bounds are whole, so it stays in the box).
+void whole_x0(std::vector<double>& x0, std::size_t integers) {
+  for (std::size_t i = x0.size() - std::min(integers, x0.size()); i < x0.size(); ++i) x0[i] = std::round(x0[i]);
+}
+
 class PagmoBackend final : public SolverBackend {
  public:
   std::string_view library() const override { return "pagmo"; }
   std::vector<BackendAlgorithm> algorithms() const override {
     std::vector<BackendAlgorithm> out;
-    for (const MethodInfo& m : method_table()) out.push_back({m.name, m.fronts, m.note});
+    for (const MethodInfo& m : method_table()) out.push_back({m.name, m.fronts, m.note, m.integers});
     return out;
   }
   std::string default_algorithm() const override { return "nsga2"; }
@@ -252,7 +297,7 @@ class PagmoBackend final : public SolverBackend {
     static const std::vector<BackendOption> table = {
         {"population", 0, 0, 100000, true, false,
          "individuals per generation; 0 = automatic (fronts: max(24, points) rounded up to a multiple of 4; "
-         "CMA-ES 4 + 3 ln n, at least 8; SADE max(12, 5 n))"},
+         "CMA-ES 4 + 3 ln n, at least 8; SADE max(12, 5 n); GACO max(16, 5 n))"},
         {"crossover_probability", 0.95, 0, 1, false, false, "NSGA-II's SBX crossover probability"},
         {"mutation_probability", 0, 0, 1, false, false,
          "NSGA-II's polynomial mutation probability per variable; 0 = 1/n"},
@@ -321,9 +366,10 @@ class PagmoBackend final : public SolverBackend {
     const std::vector<double> lo = problem.lower_bounds(), up = problem.upper_bounds();
     std::vector<double> x0c(x0.begin(), x0.end());
     for (std::size_t i = 0; i < x0c.size(); ++i) x0c[i] = std::clamp(x0c[i], lo[i], up[i]);
+    whole_x0(x0c, problem.num_integer());
     EvaluationTracker tracker(problem, settings, callbacks, x0c);
     const std::size_t pop = population_size(*this, settings, m, problem.dimension(), 0);
-    const RunEnd end = evolve(tracker, settings, m, 1, pop, [](std::size_t) {});
+    const RunEnd end = evolve(tracker, settings, m, 1, problem.num_integer(), pop, [](std::size_t) {});
     tracker.rethrow_if_error();
 
     SolverResult result;
@@ -351,6 +397,7 @@ class PagmoBackend final : public SolverBackend {
     const std::vector<double> lo = problem.lower_bounds(), up = problem.upper_bounds();
     std::vector<double> x0c(x0.begin(), x0.end());
     for (std::size_t i = 0; i < x0c.size(); ++i) x0c[i] = std::clamp(x0c[i], lo[i], up[i]);
+    whole_x0(x0c, problem.num_integer());
 
     std::string label;
     std::vector<ParetoPoint> archive;  // every feasible evaluation, in evaluation order
@@ -369,7 +416,7 @@ class PagmoBackend final : public SolverBackend {
       };
     EvaluationTracker tracker(problem, s, cb, x0c);
     const std::size_t pop = population_size(*this, s, m, problem.dimension(), settings.points);
-    const RunEnd end = evolve(tracker, s, m, n_obj, pop, [&](std::size_t g) {
+    const RunEnd end = evolve(tracker, s, m, n_obj, problem.num_integer(), pop, [&](std::size_t g) {
       label = std::string(m.name) + " generation " + std::to_string(g);
     });
     tracker.rethrow_if_error();

@@ -78,6 +78,7 @@ class ScalarizedProblem : public Problem {
   }
 
   std::size_t dimension() const override { return original_.dimension(); }
+  std::size_t num_integer() const override { return original_.num_integer(); }
   std::vector<std::string> variable_names() const override { return original_.variable_names(); }
   std::vector<double> lower_bounds() const override { return original_.lower_bounds(); }
   std::vector<double> upper_bounds() const override { return original_.upper_bounds(); }

@@ -52,6 +52,12 @@ class Problem {
   virtual std::vector<double> lower_bounds() const = 0;
   virtual std::vector<double> upper_bounds() const = 0;
 
+  // The last num_integer() variables take whole values only, between whole
+  // bounds (pagmo's convention): an index into a list of discrete values,
+  // searched by the algorithms that handle integers (BackendAlgorithm::
+  // integers) and refused by the others.
+  virtual std::size_t num_integer() const { return 0; }
+
   virtual std::size_t num_objectives() const { return 1; }
   virtual std::size_t num_inequality() const { return 0; }
   virtual std::size_t num_equality() const { return 0; }

@@ -92,11 +92,34 @@ std::string check_bounds(const Problem& problem) {
   return "";
 }
 
+// Whole-valued variables need an algorithm that keeps them whole; the others
+// would evaluate between two list entries.
+std::optional<SolverSettingsRefusal> check_integers(const SolverSettings& s, const SolverBackend& backend,
+                                                    const ProblemShape& shape) {
+  if (shape.integer == 0) return std::nullopt;
+  if (shape.integer > shape.dimension)
+    return SolverSettingsRefusal{SolverSetting::kProblem,
+                                 "the problem declares " + std::to_string(shape.integer) + " integer variables of " +
+                                     std::to_string(shape.dimension)};
+  const auto algorithm = backend.find_algorithm(s.algorithm);
+  if (algorithm && algorithm->integers) return std::nullopt;
+  std::vector<std::string> able;
+  for (const SolverBackend* b : solver_backends())
+    for (const BackendAlgorithm& a : b->algorithms())
+      if (a.integers) able.push_back(std::string(b->library()) + " " + a.name);
+  return SolverSettingsRefusal{SolverSetting::kAlgorithm,
+                               std::string(backend.library()) + (algorithm ? " " + algorithm->name : std::string()) +
+                                   " moves continuous variables only and the problem has " +
+                                   std::to_string(shape.integer) + " whole-valued ones; algorithms that search them: " +
+                                   join(able),
+                               ""};
+}
+
 }  // namespace
 
 ProblemShape shape_of(const Problem& problem) {
   return ProblemShape{problem.dimension(), problem.num_objectives(), problem.num_inequality(),
-                      problem.num_equality()};
+                      problem.num_equality(), problem.num_integer()};
 }
 
 std::vector<std::string> nlopt_algorithm_names() {
@@ -125,6 +148,7 @@ std::optional<SolverSettingsRefusal> check_solver_settings(const SolverSettings&
   if (std::string msg = check_numbers(settings); !msg.empty())
     return SolverSettingsRefusal{SolverSetting::kNumbers, msg};
   if (auto r = check_options(settings, backend)) return r;
+  if (auto r = check_integers(settings, backend, shape)) return r;
   return backend.check(settings, shape);
 }
 

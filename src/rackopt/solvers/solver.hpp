@@ -102,6 +102,7 @@ struct ProblemShape {
   std::size_t objectives = 1;
   std::size_t inequality = 0;  // constraints g(x) <= 0
   std::size_t equality = 0;    // constraints h(x) = 0
+  std::size_t integer = 0;     // of `dimension`, the last ones take whole values only
 };
 ProblemShape shape_of(const Problem& problem);
 

@@ -38,6 +38,7 @@ struct BackendAlgorithm {
   std::string name;           // as written in `solver.algorithm` (compared without case)
   bool fronts = false;        // finds a whole Pareto front itself (population multi-objective search)
   std::string note;           // one line for docs and messages
+  bool integers = false;      // searches whole-valued variables (Problem::num_integer) as such
 };
 
 class SolverBackend {

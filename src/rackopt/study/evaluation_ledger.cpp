@@ -199,6 +199,13 @@ void EvaluationLedger::append(const DesignEvaluation& d, const std::string& labe
   store_->append(e);
 }
 
+std::vector<std::size_t> EvaluationLedger::tags_ranked() const {
+  std::set<std::size_t> tags;
+  for (const auto& entry : tag_best_) tags.insert(entry.first);
+  for (const auto& entry : tag_least_) tags.insert(entry.first);
+  return {tags.begin(), tags.end()};
+}
+
 void EvaluationLedger::add_warning(const std::string& w) {
   if (!warning_set_.insert(w).second) return;
   if (warnings_.size() < kMaxWarnings) {
@@ -214,23 +221,24 @@ void EvaluationLedger::track(const DesignEvaluation& d, const std::string& label
   const solvers::Evaluation& e = d.evaluation;
   if (e.ok()) any_ok_ = true;
   const bool has_objective = !spec_.objectives.empty();
+  const std::size_t tag = tagger_ ? tagger_(d.x) : tag_;
   if (ranks && e.ok()) {
     if (solvers::is_feasible(e, spec_.solver.constraint_tolerance)) {
       const double f = has_objective ? e.objectives[0] : 0.0;
       if (!best_ || (has_objective && f < best_scaled_)) {
         best_ = to_result(d, label);
         best_scaled_ = f;
-        best_tag_ = tag_;
+        best_tag_ = tag;
       }
-      auto& tb = tag_best_[tag_];
-      if (!tb || (has_objective && f < tag_best_scaled_[tag_])) {
+      auto& tb = tag_best_[tag];
+      if (!tb || (has_objective && f < tag_best_scaled_[tag])) {
         tb = to_result(d, label);
-        tag_best_scaled_[tag_] = f;
+        tag_best_scaled_[tag] = f;
       }
     } else {
       const double v = solvers::max_violation(e);
       if (!least_ || v < least_->max_violation) least_ = to_result(d, label);
-      auto& tl = tag_least_[tag_];
+      auto& tl = tag_least_[tag];
       if (!tl || v < tl->max_violation) tl = to_result(d, label);
     }
   }

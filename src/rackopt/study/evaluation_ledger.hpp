@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -57,6 +58,9 @@ class EvaluationLedger {
   void set_phase(std::string p) { phase_ = std::move(p); }
   // Later designs are ranked within combination t (best_of_tag).
   void set_tag(std::size_t t) { tag_ = t; }
+  // Later designs are ranked within the combination `of` names for each
+  // (one search over every combination); an empty function restores set_tag.
+  void set_tagger(std::function<std::size_t(std::span<const double>)> of) { tagger_ = std::move(of); }
 
   // Latched: once the user asked to stop, every later poll says so.
   bool stop_requested();
@@ -88,6 +92,8 @@ class EvaluationLedger {
   // Best feasible / least infeasible design recorded under tag t.
   std::optional<DesignResult> best_of_tag(std::size_t t) const;
   std::optional<DesignResult> least_infeasible_of_tag(std::size_t t) const;
+  // The tags of every ranked design so far (feasible or not), ascending.
+  std::vector<std::size_t> tags_ranked() const;
 
   // pareto: every feasible design counted so far, in order, with its
   // objectives minimized in their own units (front_summary.hpp).
@@ -119,6 +125,7 @@ class EvaluationLedger {
   std::optional<DesignResult> best_, least_;
   double best_scaled_ = 0;
   std::size_t best_tag_ = 0, tag_ = 0;
+  std::function<std::size_t(std::span<const double>)> tagger_;
   std::map<std::size_t, std::optional<DesignResult>> tag_best_, tag_least_;
   std::map<std::size_t, double> tag_best_scaled_;
   bool any_ok_ = false;

@@ -8,6 +8,7 @@
 #include "rackopt/study/front_summary.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
+#include "rackopt/study/study_kind_rules.hpp"
 
 namespace rackopt::study {
 
@@ -36,15 +37,19 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   solvers::ParetoSettings ps = spec.pareto;
   ps.solver = solver;
   std::vector<DesignResult> candidates;
-  std::vector<std::size_t> candidate_combination;  // the combination of each candidate
-  // Each combination's phase text and how many front points it gave.
+  std::vector<std::size_t> candidate_run;  // the run (combination) that gave each candidate
+  // Each run's phase text and how many front points it gave.
   std::vector<std::pair<std::string, std::size_t>> combination_of_front;
   std::vector<std::string> shortfall;
   std::vector<StudyStatus> statuses;
-  for (std::size_t c = 0; c < combos; ++c) {
+  // One run per combination, or one run over them all when the algorithm
+  // searches the discrete variables as integers.
+  const bool integers = searches_discrete_as_integers(spec);
+  const std::size_t runs = integers ? 1 : combos;
+  for (std::size_t c = 0; c < runs; ++c) {
     if (ledger.stop_requested()) break;
-    const StudyProblem p = base.for_combination(c);
-    const std::string phase = combination_phase(p);
+    const StudyProblem p = integers ? base.with_discrete_as_integers() : base.for_combination(c);
+    const std::string phase = integers ? "" : combination_phase(p);
     ledger.set_phase(phase.empty() ? "pareto" : phase);
     RecordedProblem rp(ledger, p);
     rp.set_label(phase);
@@ -55,7 +60,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       const DesignResult d = ledger.to_result(o.design, phase);
       if (d.feasible) {
         candidates.push_back(d);
-        candidate_combination.push_back(c);
+        candidate_run.push_back(c);
       }
       combination_of_front.push_back({phase, d.feasible ? 1u : 0u});
       statuses.push_back(d.feasible ? StudyStatus::kOk : StudyStatus::kNoFeasiblePoint);
@@ -101,7 +106,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       DesignResult r = ledger.to_result(d, label);
       if (r.feasible) {
         candidates.push_back(std::move(r));
-        candidate_combination.push_back(c);
+        candidate_run.push_back(c);
       }
     }
     combination_of_front.push_back({phase, candidates.size() - first_candidate});
@@ -121,7 +126,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   std::vector<std::vector<double>> vectors;
   for (const auto& d : candidates) vectors.push_back(minimized_scaled(d));
   std::vector<std::vector<double>> kept_vectors;
-  std::vector<std::size_t> kept_per_combination(combos, 0);
+  std::vector<std::size_t> kept_per_run(runs, 0);
   std::vector<std::size_t> kept =
       solvers::select_front_indices(vectors, spec.pareto.points, spec.pareto.duplicate_tolerance);
   // Reported in objective 0's own sense, ascending (then the others).
@@ -130,13 +135,13 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   for (std::size_t i : kept) {
     result.front.push_back(candidates[i]);
     kept_vectors.push_back(vectors[i]);
-    ++kept_per_combination[candidate_combination[i]];
+    ++kept_per_run[candidate_run[i]];
   }
-  if (combos > 1 && result.front.size() < spec.pareto.points) {
+  if (runs > 1 && result.front.size() < spec.pareto.points) {
     for (std::size_t c = 0; c < combination_of_front.size(); ++c) {
       const auto& [phase, given] = combination_of_front[c];
-      if (given > kept_per_combination[c])
-        shortfall.push_back(phase + ": " + std::to_string(given - kept_per_combination[c]) + " of its " +
+      if (given > kept_per_run[c])
+        shortfall.push_back(phase + ": " + std::to_string(given - kept_per_run[c]) + " of its " +
                             std::to_string(given) + " front points are dominated by other combinations' points");
     }
   }
@@ -184,7 +189,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   } else if (result.front.empty()) {
     status = ledger.any_ok() ? StudyStatus::kNoFeasiblePoint : StudyStatus::kAllFailed;
   } else {
-    status = combos == 1 && !statuses.empty() ? statuses[0] : StudyStatus::kOk;
+    status = runs == 1 && !statuses.empty() ? statuses[0] : StudyStatus::kOk;
   }
   return status;
 }

@@ -32,6 +32,7 @@ class RecordedProblem final : public solvers::Problem {
   std::size_t num_objectives() const override { return problem_.num_objectives(); }
   std::size_t num_inequality() const override { return problem_.num_inequality(); }
   std::size_t num_equality() const override { return problem_.num_equality(); }
+  std::size_t num_integer() const override { return problem_.num_integer(); }
 
   solvers::Evaluation evaluate(std::span<const double> u) const override;
   std::vector<solvers::Evaluation> evaluate_batch(const std::vector<std::vector<double>>& us) const override;

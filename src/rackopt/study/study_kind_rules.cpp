@@ -1,6 +1,9 @@
 #include "rackopt/study/study_kind_rules.hpp"
 
+#include <algorithm>
 #include <vector>
+
+#include "rackopt/solvers/solver_backend.hpp"
 
 #include "rackopt/core/text.hpp"
 #include "rackopt/units/units.hpp"
@@ -83,7 +86,7 @@ bool enumerates_combinations(const StudySpec& spec) {
 }
 
 std::optional<StudyRuleViolation> discrete_combinations(const StudySpec& spec) {
-  if (!enumerates_combinations(spec)) return std::nullopt;
+  if (!enumerates_combinations(spec) || searches_discrete_as_integers(spec)) return std::nullopt;
   double combinations = 1;
   std::vector<std::string> factors;
   for (const auto& v : spec.variables) {
@@ -96,7 +99,8 @@ std::optional<StudyRuleViolation> discrete_combinations(const StudySpec& spec) {
                    "the discrete variables " + join(factors, " x ") + " make " + format_number(combinations, 12) +
                        " combinations, each optimized separately; more than limits.max_discrete_combinations = " +
                        std::to_string(spec.max_discrete_combinations) +
-                       "; drop values, make a variable continuous, or raise the limit");
+                       "; drop values, make a variable continuous, search them as integers in one run (solver library "
+                       "pagmo, algorithm gaco; nsga2 for a population front), or raise the limit");
 }
 
 StudyRulePart part_of(solvers::SolverSetting s, const solvers::SolverSettings& settings) {
@@ -187,12 +191,31 @@ std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec&
   return "study";
 }
 
+bool searches_discrete_as_integers(const StudySpec& spec) {
+  const bool population = spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kPopulation;
+  if (spec.kind != StudyKind::kOptimize && !population) return false;
+  const auto any_list = std::any_of(spec.variables.begin(), spec.variables.end(),
+                                    [](const DesignVariable& v) { return v.discrete() && v.values.size() >= 2; });
+  if (!any_list) return false;
+  const solvers::SolverBackend* backend = solvers::find_solver_backend(spec.solver.library);
+  if (!backend) return false;
+  const auto algorithm = backend->find_algorithm(spec.solver.algorithm);
+  return algorithm && algorithm->integers;
+}
+
 solvers::ProblemShape solver_problem_shape(const StudySpec& spec) {
   solvers::ProblemShape shape;
   if (spec.kind == StudyKind::kPareto && spec.pareto.method == solvers::Scalarization::kPopulation)
     shape.objectives = spec.objectives.size();
-  for (const auto& v : spec.variables)
-    if (!v.discrete()) ++shape.dimension;
+  const bool integers = searches_discrete_as_integers(spec);
+  for (const auto& v : spec.variables) {
+    if (!v.discrete()) {
+      ++shape.dimension;
+    } else if (integers && v.values.size() >= 2) {
+      ++shape.dimension;
+      ++shape.integer;
+    }
+  }
   for (const auto& c : spec.constraints) {
     shape.inequality += (c.min ? 1 : 0) + (c.max ? 1 : 0);
     shape.equality += c.equals ? 1 : 0;

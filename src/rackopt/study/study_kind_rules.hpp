@@ -47,9 +47,10 @@ struct StudyRuleViolation {
 //  * evaluate and reliability: every variable has a start (one design);
 //  * sweep: the grid or the sample within sweep.max_points;
 //  * optimize and pareto: discrete combinations within
-//    max_discrete_combinations, and the solver able to run the problem's
-//    shape (continuous variables, the constraints' inequality/equality
-//    counts; for eps_constraint fronts also the objectives turned into bounds).
+//    max_discrete_combinations (unless searched as integers), and the
+//    solver able to run the problem's shape (its variables, the constraints'
+//    inequality/equality counts; for eps_constraint fronts also the
+//    objectives turned into bounds).
 std::optional<StudyRuleViolation> check_study_kind_rules(const StudySpec& spec);
 
 // The study-file key a violation asks to change ("objectives",
@@ -57,9 +58,18 @@ std::optional<StudyRuleViolation> check_study_kind_rules(const StudySpec& spec);
 // StudySpec that has no file positions.
 std::string study_rule_key(const StudyRuleViolation& violation, const StudySpec& spec);
 
+// Whether an optimize or pareto study hands its discrete variables to the
+// solver as whole-valued variables (StudyProblem::with_discrete_as_integers)
+// in one run, instead of one run per combination: when it has a discrete
+// variable of two or more values and its algorithm searches integers
+// (pagmo's gaco for optimize, nsga2 for a population front).
+bool searches_discrete_as_integers(const StudySpec& spec);
+
 // The shape of the problems the solver sees in an optimize or pareto study
-// (one objective, or the pareto study's objectives for the population method): continuous variables, and inequality/equality counts of
-// the constraints (a constraint with min and max is two inequalities).
+// (one objective, or the pareto study's objectives for the population
+// method): the continuous variables (plus the discrete ones when searched
+// as integers), and inequality/equality counts of the constraints (a
+// constraint with min and max is two inequalities).
 solvers::ProblemShape solver_problem_shape(const StudySpec& spec);
 
 }  // namespace rackopt::study

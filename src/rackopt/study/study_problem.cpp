@@ -33,6 +33,7 @@ struct StudyProblem::Shared {
   std::vector<metrics::MetricRequest> requests;
   std::vector<std::string> labels;
   std::vector<std::size_t> continuous, discrete;
+  std::vector<std::size_t> searched;  // of `discrete` (positions in it), the ones of two or more values
   std::vector<std::size_t> objective_metric;  // per objective: index into labels
   std::vector<ConstraintRow> inequality, equality;
   std::size_t combinations = 1;
@@ -59,6 +60,8 @@ StudyProblem::StudyProblem(const StudySpec& spec) {
       s->continuous.push_back(i);
     }
   }
+  for (std::size_t k = 0; k < s->discrete.size(); ++k)
+    if (spec.variables[s->discrete[k]].values.size() >= 2) s->searched.push_back(k);
   for (const auto& o : spec.objectives) s->objective_metric.push_back(index_of(o.metric));
   for (const auto& c : spec.constraints) {
     const std::size_t m = index_of(c.metric);
@@ -86,6 +89,34 @@ StudyProblem StudyProblem::for_combination(std::size_t c) const {
   }
   return p;
 }
+
+StudyProblem StudyProblem::with_discrete_as_integers() const {
+  StudyProblem p = for_combination(0);
+  p.integers_ = true;
+  return p;
+}
+
+std::size_t StudyProblem::combination_of(std::span<const double> x_si) const {
+  std::size_t c = 0;
+  for (std::size_t i : shared_->discrete) {
+    const auto& values = shared_->spec.variables[i].values;
+    const auto it = std::find(values.begin(), values.end(), i < x_si.size() ? x_si[i] : values.front());
+    c = c * values.size() + static_cast<std::size_t>(it == values.end() ? 0 : it - values.begin());
+  }
+  return c;
+}
+
+namespace {
+
+// The list entry nearest to `value` (the first of equally near ones).
+std::size_t nearest_index(const std::vector<double>& values, double value) {
+  std::size_t best = 0;
+  for (std::size_t j = 1; j < values.size(); ++j)
+    if (std::abs(values[j] - value) < std::abs(values[best] - value)) best = j;
+  return best;
+}
+
+}  // namespace
 
 const StudySpec& StudyProblem::spec() const { return shared_->spec; }
 const ProblemTree& StudyProblem::tree() const { return shared_->tree; }
@@ -130,6 +161,11 @@ std::vector<double> StudyProblem::start_unit() const {
   std::vector<double> u;
   for (std::size_t i : shared_->continuous)
     u.push_back(std::clamp((x[i] - vars[i].lower) / (vars[i].upper - vars[i].lower), 0.0, 1.0));
+  if (integers_)
+    for (std::size_t k : shared_->searched) {
+      const std::size_t i = shared_->discrete[k];
+      u.push_back(static_cast<double>(nearest_index(vars[i].values, x[i])));
+    }
   return u;
 }
 
@@ -143,6 +179,15 @@ std::vector<double> StudyProblem::to_design(std::span<const double> u) const {
     x[shared_->continuous[k]] = t == 1.0 ? v.upper : v.lower + t * (v.upper - v.lower);
   }
   for (std::size_t k = 0; k < shared_->discrete.size(); ++k) x[shared_->discrete[k]] = combination_values_[k];
+  if (integers_) {
+    const std::size_t n_c = shared_->continuous.size();
+    for (std::size_t j = 0; j < shared_->searched.size(); ++j) {
+      const std::size_t i = shared_->discrete[shared_->searched[j]];
+      const auto& values = vars[i].values;
+      const double index = n_c + j < u.size() ? std::round(u[n_c + j]) : 0.0;
+      x[i] = values[static_cast<std::size_t>(std::clamp(index, 0.0, static_cast<double>(values.size() - 1)))];
+    }
+  }
   return x;
 }
 
@@ -247,16 +292,25 @@ DesignEvaluation StudyProblem::to_evaluation(DesignMetrics m) const {
   return d;
 }
 
-std::size_t StudyProblem::dimension() const { return shared_->continuous.size(); }
+std::size_t StudyProblem::dimension() const { return shared_->continuous.size() + num_integer(); }
+std::size_t StudyProblem::num_integer() const { return integers_ ? shared_->searched.size() : 0; }
 
 std::vector<std::string> StudyProblem::variable_names() const {
   std::vector<std::string> names;
   for (std::size_t i : shared_->continuous) names.push_back(shared_->spec.variables[i].key);
+  if (integers_)
+    for (std::size_t k : shared_->searched) names.push_back(shared_->spec.variables[shared_->discrete[k]].key + " (index)");
   return names;
 }
 
 std::vector<double> StudyProblem::lower_bounds() const { return std::vector<double>(dimension(), 0.0); }
-std::vector<double> StudyProblem::upper_bounds() const { return std::vector<double>(dimension(), 1.0); }
+std::vector<double> StudyProblem::upper_bounds() const {
+  std::vector<double> up(shared_->continuous.size(), 1.0);
+  if (integers_)
+    for (std::size_t k : shared_->searched)
+      up.push_back(static_cast<double>(shared_->spec.variables[shared_->discrete[k]].values.size() - 1));
+  return up;
+}
 std::size_t StudyProblem::num_objectives() const { return shared_->spec.objectives.size(); }
 std::size_t StudyProblem::num_inequality() const { return shared_->inequality.size(); }
 std::size_t StudyProblem::num_equality() const { return shared_->equality.size(); }

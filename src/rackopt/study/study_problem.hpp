@@ -6,9 +6,11 @@
 // each normalized to [0, 1] (u = (x - lower) / (upper - lower)). Module in
 // metres and span in metres differ by 100x; on a unit box COBYLA's initial
 // step, the relative x tolerance and the finite-difference step mean the
-// same for every variable. Discrete variables are not seen by the solver:
-// they are fixed per enumerated combination (for_combination) and the
-// continuous rest is optimized for each.
+// same for every variable. Discrete variables are either not seen by the
+// solver: fixed per enumerated combination (for_combination), the
+// continuous rest optimized for each; or, for an algorithm that searches
+// whole-valued variables (with_discrete_as_integers), seen as the index into
+// their list of values, after the continuous ones.
 //
 // Mapping of one design (all metric values v in SI):
 //   objective i:   (maximize ? -v : v) / scale_i
@@ -66,6 +68,15 @@ class StudyProblem final : public solvers::Problem {
   // The same study with the discrete variables at combination `c`
   // (0 <= c < num_combinations()); shares the loaded problem.
   StudyProblem for_combination(std::size_t c) const;
+  // The same study with every discrete variable of two or more values as a
+  // whole-valued solver variable (the index into its values, bounds
+  // [0, values - 1]) after the continuous ones; a one-value variable keeps
+  // its value. Shares the loaded problem.
+  StudyProblem with_discrete_as_integers() const;
+  bool discrete_as_integers() const { return integers_; }
+  // The combination (as numbered by for_combination) of a full SI design
+  // whose discrete variables hold values of their lists.
+  std::size_t combination_of(std::span<const double> x_si) const;
 
   const StudySpec& spec() const;
   const ProblemTree& tree() const;
@@ -125,11 +136,13 @@ class StudyProblem final : public solvers::Problem {
   std::size_t num_objectives() const override;
   std::size_t num_inequality() const override;
   std::size_t num_equality() const override;
+  std::size_t num_integer() const override;
   solvers::Evaluation evaluate(std::span<const double> u) const override;
 
  private:
   struct Shared;
   std::shared_ptr<const Shared> shared_;
+  bool integers_ = false;
   std::size_t combination_ = 0;
   std::vector<double> combination_values_;  // per discrete index
   std::vector<double> objective_scales_;

@@ -58,13 +58,17 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   // of evaluate/reliability. A sweep without automatic scales skips it.
   bool needs_start = spec.kind != StudyKind::kSweep;
   for (const auto& o : spec.objectives) needs_start = needs_start || o.scale <= 0;
-  const std::size_t combos = base.num_combinations();
+  // Runs: one per discrete combination, or one over all of them when the
+  // solver searches the discrete variables as integers.
+  const bool integers = searches_discrete_as_integers(spec);
+  const std::size_t runs = integers ? 1 : base.num_combinations();
+  const bool solves = integers || base.dimension() > 0;
   std::size_t budget = needs_start ? 1 : 0;
   switch (spec.kind) {
     case StudyKind::kSweep: budget += points.size(); break;
-    case StudyKind::kOptimize: budget += combos * (base.dimension() > 0 ? spec.solver.max_evaluations : 1); break;
+    case StudyKind::kOptimize: budget += runs * (solves ? spec.solver.max_evaluations : 1); break;
     case StudyKind::kPareto:
-      budget += combos * (base.dimension() > 0 ? spec.pareto.points * spec.solver.max_evaluations : 1);
+      budget += runs * (solves ? spec.pareto.points * spec.solver.max_evaluations : 1);
       break;
     default: break;
   }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 #include "rackopt/units/units.hpp"
@@ -49,7 +50,12 @@ const DesignVariable* variable_named(const StudySpec& spec, const std::string& k
 std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r) {
   if (r.per_combination.empty()) return "";
   std::ostringstream o;
-  o << "### Best design per combination\n\n| combination | status | feasible |";
+  o << "### Best design per combination\n\n";
+  if (searches_discrete_as_integers(spec))
+    o << "The discrete variables were searched as integers in one " << spec.solver.algorithm
+      << " run: each row is the best design that run visited in the combination, its status the run's; "
+         "combinations it never visited are not listed.\n\n";
+  o << "| combination | status | feasible |";
   for (const auto& v : spec.variables)
     if (!v.discrete()) o << " `" << v.key << "` |";
   for (const auto& ob : spec.objectives) o << " " << ob.label << " |";
