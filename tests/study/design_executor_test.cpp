@@ -69,6 +69,44 @@ TEST(DesignExecutor, APopulationStudyGivesTheSameResultOnEveryExecutor) {
   EXPECT_EQ(*std::max_element(backwards->sizes.begin(), backwards->sizes.end()), 24u);
 }
 
+// Optimize and pareto studies over a module list: one COBYLA run per module,
+// the runs in lockstep, so a batch holds one request of every run.
+TEST(DesignExecutor, EnumeratedCombinationsGiveTheSameRecordOnEveryExecutorAndShareBatches) {
+  for (StudyKind kind : {StudyKind::kOptimize, StudyKind::kPareto}) {
+    StudySpec s = railway_spec(kind);
+    s.variables = {discrete("pinion.module", {0.025, 0.031831, 0.04}),
+                   continuous("pinion.pressure_angle", 12 * kDeg, 20 * kDeg)};
+    s.objectives = {objective("stiffness_fluctuation")};
+    if (kind == StudyKind::kPareto) {
+      s.variables.push_back(continuous("rack.span", 1.0, 3.0));
+      s.objectives.push_back(objective("supports_per_metre"));
+      s.pareto.points = 4;
+    }
+    s.constraints = {constraint("contact_ratio", 1.3)};
+    s.solver.max_evaluations = 30;
+    const std::string name = kind == StudyKind::kOptimize ? "lockstep_optimize" : "lockstep_pareto";
+    const StudyResult serial = run_study(s, options_in(scratch_path(name + "_serial"), 1));
+    const StudyResult threads = run_study(s, options_in(scratch_path(name + "_threads"), 2));
+    RunOptions backwards_options = options_in(scratch_path(name + "_backwards"), 1);
+    auto backwards = std::make_shared<BackwardsExecutor>();
+    backwards_options.executor = backwards;
+    const StudyResult other = run_study(s, backwards_options);
+    expect_same_results(serial, threads);
+    expect_same_results(serial, other);
+    ASSERT_TRUE(serial.best && other.best);
+    EXPECT_EQ(serial.best->x, other.best->x);
+    const auto a = rows_of(serial, s), b = rows_of(other, s);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_EQ(a[k].x, b[k].x);
+      EXPECT_EQ(a[k].phase, b[k].phase);
+    }
+    // Three runs side by side: batches of three (one request each) until
+    // runs end.
+    EXPECT_EQ(*std::max_element(backwards->sizes.begin(), backwards->sizes.end()), 3u) << name;
+  }
+}
+
 TEST(DesignExecutor, ThreadExecutorDescribesItselfAndKeepsOrder) {
   const StudySpec s = population_study();
   StudyProblem p(s);

@@ -221,7 +221,7 @@ void EvaluationLedger::track(const DesignEvaluation& d, const std::string& label
   const solvers::Evaluation& e = d.evaluation;
   if (e.ok()) any_ok_ = true;
   const bool has_objective = !spec_.objectives.empty();
-  const std::size_t tag = tagger_ ? tagger_(d.x) : tag_;
+  const std::size_t tag = tagger_ ? tagger_(d.x) : 0;
   if (ranks && e.ok()) {
     if (solvers::is_feasible(e, spec_.solver.constraint_tolerance)) {
       const double f = has_objective ? e.objectives[0] : 0.0;

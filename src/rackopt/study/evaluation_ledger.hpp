@@ -56,10 +56,8 @@ class EvaluationLedger {
   unsigned threads() const { return threads_; }
   void set_budget(std::size_t b) { budget_ = b; }
   void set_phase(std::string p) { phase_ = std::move(p); }
-  // Later designs are ranked within combination t (best_of_tag).
-  void set_tag(std::size_t t) { tag_ = t; }
-  // Later designs are ranked within the combination `of` names for each
-  // (one search over every combination); an empty function restores set_tag.
+  // Later designs are ranked within the combination (tag) `of` names for
+  // each (best_of_tag); without a tagger every design has tag 0.
   void set_tagger(std::function<std::size_t(std::span<const double>)> of) { tagger_ = std::move(of); }
 
   // Latched: once the user asked to stop, every later poll says so.
@@ -124,7 +122,7 @@ class EvaluationLedger {
   bool stopped_ = false;
   std::optional<DesignResult> best_, least_;
   double best_scaled_ = 0;
-  std::size_t best_tag_ = 0, tag_ = 0;
+  std::size_t best_tag_ = 0;
   std::function<std::size_t(std::span<const double>)> tagger_;
   std::map<std::size_t, std::optional<DesignResult>> tag_best_, tag_least_;
   std::map<std::size_t, double> tag_best_scaled_;

@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "rackopt/study/combination_runs.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
@@ -49,29 +50,46 @@ StudyStatus drive_optimize(const KindDriverContext& ctx) {
   const bool integers = searches_discrete_as_integers(ctx.spec);
   std::optional<solvers::SolverStatus> joint;  // the one run's status when searched as integers
   if (integers && !ledger.stop_requested()) joint = optimize_with_integers(ctx, messages);
-  for (std::size_t c = 0; c < combos && !integers; ++c) {
-    if (ledger.stop_requested()) break;
-    const StudyProblem p = base.for_combination(c);
-    const std::string phase = combination_phase(p);
-    ledger.set_phase(phase.empty() ? "optimize" : phase);
-    ledger.set_tag(c);
-    RecordedProblem rp(ledger, p);
-    rp.set_label(phase.empty() ? "optimize" : phase);
-    if (p.dimension() == 0) {
-      // Every variable discrete: the enumeration is the optimization.
-      const std::vector<double> x = p.to_design({});
-      ledger.settle(ledger.obtain(p, x), phase.empty() ? "optimize" : phase, false);
-      statuses[c] = solvers::SolverStatus::kConverged;
-      continue;
+  if (!integers) {
+    // One run per combination, the runs in lockstep: each round's designs of
+    // every combination go to the executor as one batch.
+    ledger.set_tagger([&base](std::span<const double> x) { return base.combination_of(x); });
+    auto label = [](const StudyProblem& p) {
+      const std::string phase = combination_phase(p);
+      return phase.empty() ? std::string("optimize") : phase;
+    };
+    CombinationRuns runs(ledger, base, solver_views(base), label);
+    std::vector<std::string> run_messages(combos);
+    runs.run([&](std::size_t c, const solvers::Problem& problem) {
+      if (ledger.stop_requested()) return;
+      const StudyProblem& p = runs.view(c);
+      const RecordedProblem& rp = runs.recorded(c);
+      ledger.set_phase(label(p));
+      if (p.dimension() == 0) {
+        // Every variable discrete: the enumeration is the optimization.
+        problem.evaluate_batch({std::vector<double>{}});
+        rp.settle_pending();
+        statuses[c] = solvers::SolverStatus::kConverged;
+        return;
+      }
+      solvers::SolverCallbacks cb;
+      cb.observer = [&](const solvers::EvaluationRecord& rec) {
+        ledger.set_phase(label(p));
+        rp.observed(rec, "");
+      };
+      cb.stop = [&ledger] { return ledger.stop_requested(); };
+      const solvers::SolverResult sr = solvers::minimize(problem, p.start_unit(), solver, cb);
+      rp.settle_pending();
+      statuses[c] = sr.status;
+      const std::string phase = combination_phase(p);
+      run_messages[c] = (phase.empty() ? "" : phase + ": ") + sr.solver_message;
+    });
+    ledger.set_tagger({});
+    for (const std::string& m : run_messages) {
+      if (m.empty()) continue;
+      if (!messages.empty()) messages += "; ";
+      messages += m;
     }
-    solvers::SolverCallbacks cb;
-    cb.observer = [&rp](const solvers::EvaluationRecord& rec) { rp.observed(rec, ""); };
-    cb.stop = [&ledger] { return ledger.stop_requested(); };
-    const solvers::SolverResult sr = solvers::minimize(rp, p.start_unit(), solver, cb);
-    rp.settle_pending();
-    statuses[c] = sr.status;
-    if (!messages.empty()) messages += "; ";
-    messages += (phase.empty() ? "" : phase + ": ") + sr.solver_message;
   }
   result.solver_message = messages;
   if (ledger.stopped()) {

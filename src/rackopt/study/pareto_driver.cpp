@@ -5,6 +5,7 @@
 #include "rackopt/core/text.hpp"
 #include "rackopt/solvers/front_selection.hpp"
 #include "rackopt/solvers/pareto.hpp"
+#include "rackopt/study/combination_runs.hpp"
 #include "rackopt/study/front_summary.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
@@ -31,7 +32,6 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   EvaluationLedger& ledger = ctx.ledger;
   StudyResult& result = ledger.result();
   const solvers::SolverSettings& solver = ctx.solver;
-  const std::size_t combos = base.num_combinations();
   const std::size_t n_obj = spec.objectives.size();
   StudyStatus status = StudyStatus::kOk;
   solvers::ParetoSettings ps = spec.pareto;
@@ -42,22 +42,50 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   std::vector<std::pair<std::string, std::size_t>> combination_of_front;
   std::vector<std::string> shortfall;
   std::vector<StudyStatus> statuses;
-  // One run per combination, or one run over them all when the algorithm
-  // searches the discrete variables as integers.
+  // One run per combination (the runs in lockstep: each round's designs of
+  // every combination go to the executor as one batch), or one run over
+  // them all when the algorithm searches the discrete variables as integers.
   const bool integers = searches_discrete_as_integers(spec);
-  const std::size_t runs = integers ? 1 : combos;
-  for (std::size_t c = 0; c < runs; ++c) {
-    if (ledger.stop_requested()) break;
-    const StudyProblem p = integers ? base.with_discrete_as_integers() : base.for_combination(c);
-    const std::string phase = integers ? "" : combination_phase(p);
-    ledger.set_phase(phase.empty() ? "pareto" : phase);
-    RecordedProblem rp(ledger, p);
-    rp.set_label(phase);
+  auto phase_of = [&](const StudyProblem& p) { return integers ? std::string() : combination_phase(p); };
+  CombinationRuns runs(ledger, base, solver_views(base), phase_of);
+  std::vector<std::optional<solvers::ParetoResult>> run_results(runs.size());
+  std::vector<char> ran(runs.size(), 0);
+  const std::size_t before = result.evaluations;
+  try {
+    runs.run([&](std::size_t c, const solvers::Problem& problem) {
+      if (ledger.stop_requested()) return;
+      ran[c] = 1;
+      const StudyProblem& p = runs.view(c);
+      const RecordedProblem& rp = runs.recorded(c);
+      const std::string phase = phase_of(p);
+      ledger.set_phase(phase.empty() ? "pareto" : phase);
+      if (p.dimension() == 0) {
+        problem.evaluate_batch({std::vector<double>{}});
+        rp.settle_pending();
+        return;
+      }
+      solvers::ParetoCallbacks cb;
+      cb.observer = [&](const std::string& label, const solvers::EvaluationRecord& rec) {
+        ledger.set_phase(phase.empty() ? label : phase + ": " + label);
+        rp.observed(rec, label);
+      };
+      cb.stop = [&ledger] { return ledger.stop_requested(); };
+      run_results[c] = solvers::pareto_front(problem, p.start_unit(), ps, cb);
+      rp.settle_pending();
+    });
+  } catch (const std::invalid_argument& e) {
+    if (result.evaluations != before) throw;
+    throw study_error(spec, "solver", e.what());
+  }
+  for (std::size_t c = 0; c < runs.size(); ++c) {
+    if (!ran[c]) break;  // stopped before it
+    const StudyProblem& p = runs.view(c);
+    const std::string phase = phase_of(p);
     if (p.dimension() == 0) {
       const std::vector<double> x = p.to_design({});
-      const Obtained o = ledger.obtain(p, x);
-      ledger.settle(o, phase, false);
-      const DesignResult d = ledger.to_result(o.design, phase);
+      const std::optional<DesignEvaluation> o = ledger.recorded(x);
+      if (!o) break;  // stopped inside its round
+      const DesignResult d = ledger.to_result(*o, phase);
       if (d.feasible) {
         candidates.push_back(d);
         candidate_run.push_back(c);
@@ -66,21 +94,8 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       statuses.push_back(d.feasible ? StudyStatus::kOk : StudyStatus::kNoFeasiblePoint);
       continue;
     }
-    solvers::ParetoCallbacks cb;
-    cb.observer = [&rp, &ledger, &phase](const std::string& label, const solvers::EvaluationRecord& rec) {
-      ledger.set_phase(phase.empty() ? label : phase + ": " + label);
-      rp.observed(rec, label);
-    };
-    cb.stop = [&ledger] { return ledger.stop_requested(); };
-    solvers::ParetoResult pr;
-    const std::size_t before = result.evaluations;
-    try {
-      pr = solvers::pareto_front(rp, p.start_unit(), ps, cb);
-    } catch (const std::invalid_argument& e) {
-      if (result.evaluations != before) throw;
-      throw study_error(spec, "solver", e.what());
-    }
-    rp.settle_pending();
+    if (!run_results[c]) break;
+    const solvers::ParetoResult& pr = *run_results[c];
     statuses.push_back(study_status(pr.status));
     const std::string where = phase.empty() ? "" : phase + ": ";
     for (const solvers::ParetoPoint& ip : pr.infeasible)
@@ -126,7 +141,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   std::vector<std::vector<double>> vectors;
   for (const auto& d : candidates) vectors.push_back(minimized_scaled(d));
   std::vector<std::vector<double>> kept_vectors;
-  std::vector<std::size_t> kept_per_run(runs, 0);
+  std::vector<std::size_t> kept_per_run(runs.size(), 0);
   std::vector<std::size_t> kept =
       solvers::select_front_indices(vectors, spec.pareto.points, spec.pareto.duplicate_tolerance);
   // Reported in objective 0's own sense, ascending (then the others).
@@ -137,7 +152,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
     kept_vectors.push_back(vectors[i]);
     ++kept_per_run[candidate_run[i]];
   }
-  if (runs > 1 && result.front.size() < spec.pareto.points) {
+  if (runs.size() > 1 && result.front.size() < spec.pareto.points) {
     for (std::size_t c = 0; c < combination_of_front.size(); ++c) {
       const auto& [phase, given] = combination_of_front[c];
       if (given > kept_per_run[c])
@@ -189,7 +204,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   } else if (result.front.empty()) {
     status = ledger.any_ok() ? StudyStatus::kNoFeasiblePoint : StudyStatus::kAllFailed;
   } else {
-    status = runs == 1 && !statuses.empty() ? statuses[0] : StudyStatus::kOk;
+    status = runs.size() == 1 && !statuses.empty() ? statuses[0] : StudyStatus::kOk;
   }
   return status;
 }

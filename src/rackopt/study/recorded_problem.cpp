@@ -13,7 +13,12 @@ std::vector<solvers::Evaluation> RecordedProblem::evaluate_batch(const std::vect
   std::vector<std::vector<double>> xs;
   xs.reserve(us.size());
   for (const auto& u : us) xs.push_back(problem_.to_design(u));
-  std::vector<Obtained> got = ledger_.obtain_batch(problem_, xs);
+  return accept(us, ledger_.obtain_batch(problem_, xs));
+}
+
+std::vector<solvers::Evaluation> RecordedProblem::accept(const std::vector<std::vector<double>>& us,
+                                                         std::vector<Obtained> got) const {
+  settle_pending();
   std::vector<solvers::Evaluation> out;
   out.reserve(us.size());
   for (std::size_t k = 0; k < us.size(); ++k) {

@@ -36,6 +36,10 @@ class RecordedProblem final : public solvers::Problem {
 
   solvers::Evaluation evaluate(std::span<const double> u) const override;
   std::vector<solvers::Evaluation> evaluate_batch(const std::vector<std::vector<double>>& us) const override;
+  // What evaluate_batch(us) does once the designs are obtained (got[k] for
+  // us[k], e.g. by one ledger batch over several runs in lockstep): the
+  // evaluations, kept pending until the adapter reports them.
+  std::vector<solvers::Evaluation> accept(const std::vector<std::vector<double>>& us, std::vector<Obtained> got) const;
 
   // The adapter's report of the evaluation just made; `sub_label` names the
   // sub-problem of a Pareto front ("anchor 1", "eps 3"), empty otherwise.
