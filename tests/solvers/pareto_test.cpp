@@ -272,6 +272,7 @@ TEST(Pareto, DeterministicAndObserved) {
   const auto p = two_circles();
   rs::ParetoSettings s = settings(rs::Scalarization::kEpsilonConstraint, "LN_COBYLA", 8);
   std::vector<std::string> labels;
+  bool anchor_after_eps = false;
   std::size_t next_index = 0;
   bool indices_ok = true;
   rs::ParetoCallbacks cb;
@@ -279,7 +280,10 @@ TEST(Pareto, DeterministicAndObserved) {
     indices_ok = indices_ok && rec.index == next_index++;
     // The record carries the ORIGINAL evaluation: both objectives, no eps constraint.
     indices_ok = indices_ok && rec.evaluation.objectives.size() == 2 && rec.evaluation.inequality.empty();
-    if (labels.empty() || labels.back() != label) labels.push_back(label);
+    // Labels in the order they first appear; the anchors run in lockstep
+    // (interleaved), the eps sub-problems after them, one after the other.
+    if (std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+    if (label.rfind("anchor", 0) == 0 && !labels.empty() && labels.back().rfind("eps", 0) == 0) anchor_after_eps = true;
   };
   const rs::ParetoResult a = rs::pareto_front(p, std::vector<double>{1.0, 0.5}, s, cb);
   const rs::ParetoResult b = rs::pareto_front(p, std::vector<double>{1.0, 0.5}, s);
@@ -287,6 +291,7 @@ TEST(Pareto, DeterministicAndObserved) {
   EXPECT_EQ(next_index, a.evaluations);
   EXPECT_EQ(labels, (std::vector<std::string>{"anchor 0", "anchor 1", "eps 1", "eps 2", "eps 3", "eps 4", "eps 5",
                                               "eps 6"}));
+  EXPECT_FALSE(anchor_after_eps);
   ASSERT_EQ(a.front.size(), b.front.size());
   for (std::size_t i = 0; i < a.front.size(); ++i) {
     EXPECT_EQ(a.front[i].x, b.front[i].x);  // bit-identical

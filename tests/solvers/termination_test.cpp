@@ -218,7 +218,9 @@ TEST(Termination, ThreeObjectiveEpsConstraintFrontEnds) {
 TEST(Termination, ParetoStopDuringAnInfeasibleSubProblemEndsTheFront) {
   // Nothing is feasible (x >= 5 outside the box [-1,3]^2), so every sub-solve
   // reports no_feasible_point, which outranks "stopped" in its status: the
-  // front must still notice the stop and start no further sub-problem.
+  // front must still notice the stop and start no further sub-problem. The
+  // two anchors run in lockstep: the one that asked for its next point in
+  // the round the stop came makes that one evaluation more, no other.
   const LambdaProblem p(
       {-1, -1}, {3, 3},
       [](std::span<const double> x) {
@@ -239,8 +241,9 @@ TEST(Termination, ParetoStopDuringAnInfeasibleSubProblemEndsTheFront) {
     return rs::pareto_front(p, std::vector<double>{0.5, 0.5}, s, cb);
   });
   EXPECT_EQ(to_string(r.status), "stopped");
-  EXPECT_EQ(r.evaluations, 30u);
-  EXPECT_EQ(r.subproblems, 1u);
+  EXPECT_GE(r.evaluations, 30u);
+  EXPECT_LE(r.evaluations, 31u);
+  EXPECT_EQ(r.subproblems, 2u);  // the anchors; no eps sub-problem started
   EXPECT_TRUE(r.front.empty());
 
   // A stop that is already set: nothing is evaluated at all.

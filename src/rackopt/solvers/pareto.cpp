@@ -1,10 +1,12 @@
 #include "rackopt/solvers/pareto.hpp"
 
+#include "rackopt/solvers/lockstep_runs.hpp"
 #include "rackopt/solvers/solver_backend.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -255,7 +257,7 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
 
   ParetoResult result;
   const double tol = settings.solver.constraint_tolerance;
-  std::size_t offset = 0;
+  std::size_t reported = 0;  // evaluations reported to the observer so far
   bool stopped = false;
   std::vector<ParetoPoint> all;  // every solved sub-problem, in solve order
 
@@ -274,12 +276,11 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
     if (callbacks.observer)
       cb.observer = [&](const EvaluationRecord& rec) {
         EvaluationRecord out = rec;
-        out.index += offset;
+        out.index = reported++;
         if (auto original = sub.original_at(rec.x)) out.evaluation = std::move(*original);
         callbacks.observer(label, out);
       };
     const SolverResult r = minimize(sub, start, settings.solver, cb);
-    offset += r.evaluations;
     result.evaluations += r.evaluations;
     result.failed_evaluations += r.failed_evaluations;
     ++result.subproblems;
@@ -295,12 +296,32 @@ ParetoResult pareto_front(const Problem& problem, std::span<const double> x0, co
     return p;
   };
 
-  // Anchors: each objective alone, all from x0.
+  // Anchors: each objective alone, all from x0. They do not depend on each
+  // other, so they run in lockstep (lockstep_runs.hpp): each round's points
+  // of every anchor go to the problem as one batch.
   std::vector<std::optional<ParetoPoint>> anchors(m);
-  for (std::size_t k = 0; k < m && !stopped; ++k) {
-    anchors[k] = solve(ScalarizedProblem::anchor(problem, k), "anchor " + std::to_string(k), x0);
+  run_in_lockstep(
+      m, m,
+      [&](std::size_t k, LockstepChannel& channel) {
+        if (stopped) return;
+        const LockstepProblem through(problem, channel);
+        anchors[k] = solve(ScalarizedProblem::anchor(through, k), "anchor " + std::to_string(k), x0);
+      },
+      [&](const std::vector<LockstepRequest>& round) {
+        std::vector<std::vector<double>> us;
+        for (const LockstepRequest& r : round) us.insert(us.end(), r.us->begin(), r.us->end());
+        std::vector<Evaluation> got = problem.evaluate_batch(us);
+        std::vector<std::vector<Evaluation>> replies;
+        std::size_t next = 0;
+        for (const LockstepRequest& r : round) {
+          replies.emplace_back(std::make_move_iterator(got.begin() + static_cast<std::ptrdiff_t>(next)),
+                               std::make_move_iterator(got.begin() + static_cast<std::ptrdiff_t>(next + r.us->size())));
+          next += r.us->size();
+        }
+        return replies;
+      });
+  for (std::size_t k = 0; k < m; ++k)
     if (anchors[k]) all.push_back(*anchors[k]);
-  }
   bool anchors_complete = true;
   for (std::size_t k = 0; k < m; ++k) anchors_complete = anchors_complete && anchors[k] && anchors[k]->feasible;
 

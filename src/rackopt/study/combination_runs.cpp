@@ -21,27 +21,27 @@ CombinationRuns::CombinationRuns(EvaluationLedger& ledger, const StudyProblem& b
 }
 
 void CombinationRuns::run(const std::function<void(std::size_t, const solvers::Problem&)>& run) {
-  run_in_lockstep(
+  solvers::run_in_lockstep(
       views_.size(), kCombinationRunsAtOnce,
-      [&](std::size_t c, LockstepChannel& channel) {
-        const LockstepProblem problem(views_[c], channel);
+      [&](std::size_t c, solvers::LockstepChannel& channel) {
+        const solvers::LockstepProblem problem(views_[c], channel);
         run(c, problem);
       },
-      [&](const std::vector<LockstepRequest>& round) { return serve(round); });
+      [&](const std::vector<solvers::LockstepRequest>& round) { return serve(round); });
 }
 
-std::vector<std::vector<solvers::Evaluation>> CombinationRuns::serve(const std::vector<LockstepRequest>& round) {
+std::vector<std::vector<solvers::Evaluation>> CombinationRuns::serve(const std::vector<solvers::LockstepRequest>& round) {
   // What each run evaluated before and has not reported is recorded first,
   // as a run alone would (RecordedProblem::evaluate_batch), then the
   // round's designs in one batch, run by run.
-  for (const LockstepRequest& r : round) recorded_[r.job]->settle_pending();
+  for (const solvers::LockstepRequest& r : round) recorded_[r.job]->settle_pending();
   std::vector<std::vector<double>> xs;
-  for (const LockstepRequest& r : round)
+  for (const solvers::LockstepRequest& r : round)
     for (const auto& u : *r.us) xs.push_back(views_[r.job].to_design(u));
   std::vector<Obtained> got = ledger_.obtain_batch(base_, xs);
   std::vector<std::vector<solvers::Evaluation>> replies;
   std::size_t next = 0;
-  for (const LockstepRequest& r : round) {
+  for (const solvers::LockstepRequest& r : round) {
     std::vector<Obtained> mine;
     for (std::size_t k = 0; k < r.us->size(); ++k) mine.push_back(std::move(got[next++]));
     replies.push_back(recorded_[r.job]->accept(*r.us, std::move(mine)));

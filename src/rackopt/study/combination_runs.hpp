@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "rackopt/study/evaluation_ledger.hpp"
-#include "rackopt/study/lockstep_runs.hpp"
+#include "rackopt/solvers/lockstep_runs.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_problem.hpp"
 
@@ -47,7 +47,7 @@ class CombinationRuns {
   void run(const std::function<void(std::size_t, const solvers::Problem&)>& run);
 
  private:
-  std::vector<std::vector<solvers::Evaluation>> serve(const std::vector<LockstepRequest>& round);
+  std::vector<std::vector<solvers::Evaluation>> serve(const std::vector<solvers::LockstepRequest>& round);
 
   EvaluationLedger& ledger_;
   const StudyProblem& base_;

@@ -95,7 +95,17 @@ std::vector<Obtained> EvaluationLedger::obtain_batch(const StudyProblem& p,
   std::vector<std::optional<Obtained>> got(xs.size());
   std::vector<std::vector<double>> missing;
   std::vector<std::size_t> where;
+  // A design asked for twice in one batch (runs in lockstep that start from
+  // the same point) is evaluated once; the later copies are repeats, as
+  // they would be had the batch come one design at a time.
+  std::map<std::string, std::size_t> first_of;
+  std::vector<std::pair<std::size_t, std::size_t>> repeats;  // (k, the earlier k it repeats)
   for (std::size_t k = 0; k < xs.size(); ++k) {
+    const auto [it, fresh] = first_of.emplace(bits_key(xs[k]), k);
+    if (!fresh) {
+      repeats.push_back({k, it->second});
+      continue;
+    }
     got[k] = lookup(xs[k]);
     if (!got[k]) {
       missing.push_back(xs[k]);
@@ -106,6 +116,7 @@ std::vector<Obtained> EvaluationLedger::obtain_batch(const StudyProblem& p,
     std::vector<DesignEvaluation> fresh = executor_->evaluate(p, missing, threads_);
     for (std::size_t j = 0; j < where.size(); ++j) got[where[j]] = Obtained{std::move(fresh[j]), Origin::kNew};
   }
+  for (const auto& [k, earlier] : repeats) got[k] = Obtained{got[earlier]->design, Origin::kRepeat};
   std::vector<Obtained> out;
   out.reserve(xs.size());
   for (auto& o : got) out.push_back(std::move(*o));

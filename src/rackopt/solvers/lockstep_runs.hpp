@@ -1,8 +1,9 @@
 // Independent solver runs advanced together, so that their evaluations go
-// to the executor as one batch: the discrete combinations of an optimize or
-// pareto study are such runs (each its own NLopt, Ipopt or pagmo run on its
-// own combination), and each asks for one point (or one finite-difference
-// batch) at a time.
+// to the executor as one batch: the anchors of a scalarized Pareto front
+// (one run per objective) and the discrete combinations of an optimize or
+// pareto study (one NLopt, Ipopt or pagmo run per combination) are such
+// runs, and each asks for one point (or one finite-difference batch) at a
+// time.
 //
 // Each run is a job on its own thread, but only one thread runs at any time:
 // the coordinator passes a baton to the live jobs in job order; a job runs
@@ -28,7 +29,7 @@
 
 #include "rackopt/solvers/problem.hpp"
 
-namespace rackopt::study {
+namespace rackopt::solvers {
 
 // What a job uses to reach the coordinator.
 class LockstepChannel {
@@ -37,7 +38,7 @@ class LockstepChannel {
   // The evaluations of `us` (solver vectors), result i for us[i]: waits for
   // the round's batch. Throws LockstepAbandoned when the coordinator gave up
   // the round (another job or the batch threw); the job must then end.
-  virtual std::vector<solvers::Evaluation> evaluate(const std::vector<std::vector<double>>& us) = 0;
+  virtual std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& us) = 0;
 };
 
 // Thrown into a waiting job when the run is abandoned; never escapes
@@ -55,14 +56,14 @@ struct LockstepRequest {
 // evaluation vector per request. Rethrows the first exception of `serve` or
 // of a job (in job order) after every job has ended.
 void run_in_lockstep(std::size_t jobs, std::size_t width, const std::function<void(std::size_t, LockstepChannel&)>& job,
-                     const std::function<std::vector<std::vector<solvers::Evaluation>>(
+                     const std::function<std::vector<std::vector<Evaluation>>(
                          const std::vector<LockstepRequest>&)>& serve);
 
 // A Problem whose evaluations go through a channel: the shape of `shape`
 // (bounds, counts, names), the values from the coordinator's batch.
-class LockstepProblem final : public solvers::Problem {
+class LockstepProblem final : public Problem {
  public:
-  LockstepProblem(const solvers::Problem& shape, LockstepChannel& channel) : shape_(shape), channel_(channel) {}
+  LockstepProblem(const Problem& shape, LockstepChannel& channel) : shape_(shape), channel_(channel) {}
 
   std::size_t dimension() const override { return shape_.dimension(); }
   std::vector<std::string> variable_names() const override { return shape_.variable_names(); }
@@ -72,12 +73,12 @@ class LockstepProblem final : public solvers::Problem {
   std::size_t num_inequality() const override { return shape_.num_inequality(); }
   std::size_t num_equality() const override { return shape_.num_equality(); }
   std::size_t num_integer() const override { return shape_.num_integer(); }
-  solvers::Evaluation evaluate(std::span<const double> u) const override;
-  std::vector<solvers::Evaluation> evaluate_batch(const std::vector<std::vector<double>>& us) const override;
+  Evaluation evaluate(std::span<const double> u) const override;
+  std::vector<Evaluation> evaluate_batch(const std::vector<std::vector<double>>& us) const override;
 
  private:
-  const solvers::Problem& shape_;
+  const Problem& shape_;
   LockstepChannel& channel_;
 };
 
-}  // namespace rackopt::study
+}  // namespace rackopt::solvers

@@ -1,4 +1,4 @@
-#include "rackopt/study/lockstep_runs.hpp"
+#include "rackopt/solvers/lockstep_runs.hpp"
 
 #include <condition_variable>
 #include <exception>
@@ -7,7 +7,7 @@
 #include <optional>
 #include <thread>
 
-namespace rackopt::study {
+namespace rackopt::solvers {
 
 namespace {
 
@@ -43,13 +43,13 @@ struct Slot final : LockstepChannel {
   std::size_t index = 0;  // the slot's number (its turn)
   std::size_t job = 0;
   const std::vector<std::vector<double>>* request = nullptr;  // set while waiting for a batch
-  std::vector<solvers::Evaluation> reply;
+  std::vector<Evaluation> reply;
   bool abandoned = false;
   bool done = false;
   std::exception_ptr error;
   std::thread thread;
 
-  std::vector<solvers::Evaluation> evaluate(const std::vector<std::vector<double>>& us) override {
+  std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& us) override {
     if (abandoned) throw LockstepAbandoned{};
     request = &us;
     baton->pass_and_wait(kCoordinator, index);
@@ -61,7 +61,7 @@ struct Slot final : LockstepChannel {
 }  // namespace
 
 void run_in_lockstep(std::size_t jobs, std::size_t width, const std::function<void(std::size_t, LockstepChannel&)>& job,
-                     const std::function<std::vector<std::vector<solvers::Evaluation>>(
+                     const std::function<std::vector<std::vector<Evaluation>>(
                          const std::vector<LockstepRequest>&)>& serve) {
   if (width == 0) width = 1;
   Baton baton;
@@ -126,7 +126,7 @@ void run_in_lockstep(std::size_t jobs, std::size_t width, const std::function<vo
     if (round.empty()) continue;
     if (!abandon) {
       try {
-        std::vector<std::vector<solvers::Evaluation>> replies = serve(round);
+        std::vector<std::vector<Evaluation>> replies = serve(round);
         for (std::size_t k = 0; k < asking.size(); ++k) asking[k]->reply = std::move(replies[k]);
       } catch (...) {
         first_error = std::current_exception();
@@ -142,12 +142,12 @@ void run_in_lockstep(std::size_t jobs, std::size_t width, const std::function<vo
   if (first_error) std::rethrow_exception(first_error);
 }
 
-solvers::Evaluation LockstepProblem::evaluate(std::span<const double> u) const {
+Evaluation LockstepProblem::evaluate(std::span<const double> u) const {
   return channel_.evaluate({std::vector<double>(u.begin(), u.end())}).front();
 }
 
-std::vector<solvers::Evaluation> LockstepProblem::evaluate_batch(const std::vector<std::vector<double>>& us) const {
+std::vector<Evaluation> LockstepProblem::evaluate_batch(const std::vector<std::vector<double>>& us) const {
   return channel_.evaluate(us);
 }
 
-}  // namespace rackopt::study
+}  // namespace rackopt::solvers

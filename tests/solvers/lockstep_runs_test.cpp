@@ -1,7 +1,7 @@
 // Runs in lockstep: each round holds the next request of every live run in
 // run order, at most `width` runs at once, one thread running at a time,
 // and an exception of a run or of the batch ends every run and comes out.
-#include "rackopt/study/lockstep_runs.hpp"
+#include "rackopt/solvers/lockstep_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace rackopt::study {
+namespace rackopt::solvers {
 namespace {
 
 // Run j asks `j + 1` times for one point (j, k) and checks each answer.
@@ -29,13 +29,13 @@ struct CountingJobs {
         ++wrong_answers;
     }
   }
-  std::vector<std::vector<solvers::Evaluation>> serve(const std::vector<LockstepRequest>& round) {
+  std::vector<std::vector<Evaluation>> serve(const std::vector<LockstepRequest>& round) {
     rounds.emplace_back();
-    std::vector<std::vector<solvers::Evaluation>> out;
+    std::vector<std::vector<Evaluation>> out;
     for (const LockstepRequest& r : round) {
       const auto& u = r.us->front();
       rounds.back().push_back({r.job, u[1]});
-      solvers::Evaluation e;
+      Evaluation e;
       e.objectives = {100.0 * u[0] + u[1]};
       out.push_back({e});
     }
@@ -82,7 +82,7 @@ TEST(LockstepRuns, ARunsExceptionEndsEveryRunAndComesOut) {
     ended_normally[j] = true;
   };
   auto serve = [](const std::vector<LockstepRequest>& round) {
-    return std::vector<std::vector<solvers::Evaluation>>(round.size(), std::vector<solvers::Evaluation>(1));
+    return std::vector<std::vector<Evaluation>>(round.size(), std::vector<Evaluation>(1));
   };
   try {
     run_in_lockstep(3, 3, job, serve);
@@ -101,11 +101,11 @@ TEST(LockstepRuns, ABatchExceptionEndsEveryRunAndComesOut) {
   };
   auto serve = [&](const std::vector<LockstepRequest>& round) {
     if (++rounds == 4) throw std::logic_error("batch failed");
-    return std::vector<std::vector<solvers::Evaluation>>(round.size(), std::vector<solvers::Evaluation>(1));
+    return std::vector<std::vector<Evaluation>>(round.size(), std::vector<Evaluation>(1));
   };
   EXPECT_THROW(run_in_lockstep(5, 2, job, serve), std::logic_error);
   EXPECT_EQ(rounds, 4u);
 }
 
 }  // namespace
-}  // namespace rackopt::study
+}  // namespace rackopt::solvers
