@@ -97,6 +97,35 @@ TEST(BatchEvaluation, Nsga2EvaluatesEachGenerationAsOneBatch) {
   for (std::size_t k = 1; k < p.sizes.size(); ++k) EXPECT_LE(p.sizes[k], 24u);
 }
 
+// The scalarized front's sub-problems hand their finite-difference probes
+// to the original problem as batches, and its anchors (one run per
+// objective) share rounds: batches of both anchors' probes.
+TEST(BatchEvaluation, ScalarizedFrontsBatchProbesAndAnchors) {
+  class TwoCircles : public BatchLogged {
+   public:
+    TwoCircles() : BatchLogged(false) {}
+    std::size_t num_objectives() const override { return 2; }
+    rs::Evaluation evaluate(std::span<const double> x) const override {
+      rs::Evaluation e;
+      e.objectives = {x[0] * x[0] + x[1] * x[1], (x[0] - 2) * (x[0] - 2) + x[1] * x[1]};
+      return e;
+    }
+  } p;
+  rs::ParetoSettings s;
+  s.method = rs::Scalarization::kWeightedSum;
+  s.points = 5;
+  s.solver = nlopt_settings("LD_SLSQP", 100);
+  const rs::ParetoResult r = rs::pareto_front(p, std::vector<double>{0.5, 0.5}, s);
+  EXPECT_EQ(r.front.size(), 5u);
+  std::size_t one_run_probes = 0, two_runs_probes = 0;
+  for (std::size_t n : p.sizes) {
+    one_run_probes += n == 2 ? 1 : 0;  // a sub-problem's two forward probes
+    two_runs_probes += n == 4 ? 1 : 0;  // both anchors' probes in one round
+  }
+  EXPECT_GT(one_run_probes, 3u);
+  EXPECT_GT(two_runs_probes, 0u);
+}
+
 TEST(BatchEvaluation, TheBudgetCutsABatchAndKeepsWhatWasEvaluated) {
   BatchLogged p(false);
   rs::SolverSettings s = nlopt_settings("LD_SLSQP", 8);

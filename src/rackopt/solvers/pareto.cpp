@@ -89,7 +89,21 @@ class ScalarizedProblem : public Problem {
   std::size_t num_equality() const override { return original_.num_equality(); }
 
   Evaluation evaluate(std::span<const double> x) const override {
-    Evaluation e = original_.evaluate(x);
+    return scalarized(x, original_.evaluate(x));
+  }
+  // A sub-solve's batch (its finite-difference probes) goes to the original
+  // problem as one batch too.
+  std::vector<Evaluation> evaluate_batch(const std::vector<std::vector<double>>& xs) const override {
+    std::vector<Evaluation> originals = original_.evaluate_batch(xs);
+    std::vector<Evaluation> out;
+    out.reserve(xs.size());
+    for (std::size_t k = 0; k < xs.size(); ++k) out.push_back(scalarized(xs[k], std::move(originals[k])));
+    return out;
+  }
+
+  // The sub-problem's evaluation from the original one at x (kept for
+  // original_at).
+  Evaluation scalarized(std::span<const double> x, Evaluation e) const {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
       seen_.emplace(std::vector<double>(x.begin(), x.end()), e);
