@@ -2,6 +2,7 @@
 // and a rank that cannot start is named. Skipped when the build has no MPI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <regex>
 #include <filesystem>
@@ -105,6 +106,25 @@ TEST(MpiCli, TwoRanksGiveTheRecordOfASerialRun) {
     EXPECT_TRUE(fs::exists(ranks + "/report.md"));
     EXPECT_TRUE(fs::exists(ranks + "/evaluations.sqlite"));
   }
+}
+
+TEST(MpiCli, AReliabilityStudysMonteCarloIsSharedByTheRanksWithTheSameSamples) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string study = "studies/ship_lift_reliability.yaml --set metric_options.reliability_samples=300";
+  const std::string serial = scratch_path("mpi_mc_serial"), ranks = scratch_path("mpi_mc_ranks");
+  const Shell s = shell(std::string(RACKOPT_CLI) + " run " + study + " --out " + serial);
+  ASSERT_EQ(s.code, 0) << s.output;
+  const Shell m =
+      shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + study + " --out " + ranks);
+  ASSERT_EQ(m.code, 0) << m.output;
+  // Every sample's life and criterion, in order, and the summary built on them.
+  const std::string lives = read_text(serial + "/life_samples.csv");
+  EXPECT_GT(std::count(lives.begin(), lives.end(), '\n'), 300);
+  EXPECT_EQ(lives, read_text(ranks + "/life_samples.csv"));
+  EXPECT_EQ(read_text(serial + "/reliability.csv"), read_text(ranks + "/reliability.csv"));
+  // ... computed by both ranks.
+  EXPECT_NE(read_text(ranks + "/report.md").find("on each of 2 MPI ranks"), std::string::npos);
+  EXPECT_EQ(read_text(serial + "/report.md").find("MPI ranks"), std::string::npos);
 }
 
 TEST(MpiCli, ARankThatCannotLoadTheStudyIsNamedAndNothingIsWritten) {

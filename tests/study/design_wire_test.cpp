@@ -46,6 +46,33 @@ TEST(DesignWire, MetricsRoundTripWithTextsAndFlags) {
   EXPECT_TRUE(back[1].failure.empty());
 }
 
+TEST(DesignWire, SampleLivesRoundTripWithFailuresAndCriteria) {
+  SampleLivesMessage m;
+  statistics::SampleResult ok, bad;
+  ok.status = statistics::SampleResult::Status::kOk;
+  ok.value = 1.2345678901234567e9;
+  bad.status = statistics::SampleResult::Status::kDesignError;
+  bad.code = "sample_outside_domain";
+  bad.message = "sampled load -3 N: not a drive";
+  m.lives.lives = {ok, bad, ok};
+  m.lives.criteria = {"max_depth", "", "contact_ratio"};
+  m.lives.interpolated = 123456;
+  const SampleLivesMessage back = decode_sample_lives(encode_sample_lives(m));
+  EXPECT_TRUE(back.failure.empty());
+  ASSERT_EQ(back.lives.lives.size(), 3u);
+  EXPECT_EQ(back.lives.lives[0].value, ok.value);
+  EXPECT_EQ(back.lives.lives[1].status, statistics::SampleResult::Status::kDesignError);
+  EXPECT_EQ(back.lives.lives[1].code, bad.code);
+  EXPECT_EQ(back.lives.lives[1].message, bad.message);
+  EXPECT_EQ(back.lives.criteria, m.lives.criteria);
+  EXPECT_EQ(back.lives.interpolated, 123456u);
+  SampleLivesMessage failed;
+  failed.failure = "the design has no random inputs to sample";
+  EXPECT_EQ(decode_sample_lives(encode_sample_lives(failed)).failure, failed.failure);
+  const std::string bytes = encode_sample_lives(m);
+  EXPECT_THROW(decode_sample_lives(bytes.substr(0, bytes.size() - 3)), std::runtime_error);
+}
+
 TEST(DesignWire, TruncatedOrPaddedBytesAreRefused) {
   DesignMetrics a;
   a.x = {1, 2};

@@ -4,12 +4,16 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
+#include <span>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/study/design_wire.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 
 namespace rackopt::mpi {
 
@@ -17,7 +21,7 @@ namespace {
 
 constexpr int kReadyTag = 1;
 constexpr int kResultTag = 2;
-enum Command : std::int64_t { kStop = 0, kEvaluate = 1 };
+enum Command : std::int64_t { kStop = 0, kEvaluate = 1, kReliabilitySamples = 2 };
 
 void send_bytes(const std::string& bytes, int to, int tag) {
   MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD);
@@ -57,6 +61,31 @@ std::vector<study::DesignMetrics> compute_share(const study::StudyProblem& probl
   return out;
 }
 
+// Rank r's share of n Monte Carlo samples: a contiguous range, so that the
+// shares concatenate in rank order.
+std::pair<std::size_t, std::size_t> sample_share(std::size_t n, int r, int size) {
+  const auto rr = static_cast<std::size_t>(r), ss = static_cast<std::size_t>(size);
+  return {n * rr / ss, n * (rr + 1) / ss};
+}
+
+// A worker's share of the Monte Carlo of a reliability study's design: the
+// same set-up as rank 0's run, then its samples.
+study::SampleLivesMessage reliability_share(const study::StudyProblem& problem, const std::vector<double>& x,
+                                            std::size_t n, int r, int size, unsigned threads) {
+  study::SampleLivesMessage m;
+  try {
+    const Drive design = problem.drive_at(x);
+    WearReliabilityOptions wo = study::study_reliability_options(problem.spec(), design, threads);
+    wo.sample_share = sample_share(n, r, size);
+    WearReliabilityResult result = run_wear_reliability(design, wo);
+    if (!result.share_lives) throw std::runtime_error("the design has no random inputs to sample");
+    m.lives = std::move(*result.share_lives);
+  } catch (const std::exception& e) {
+    m.failure = e.what();
+  }
+  return m;
+}
+
 class MpiExecutor final : public study::DesignExecutor {
  public:
   MpiExecutor(MpiJob& job, unsigned threads) : job_(job), threads_(resolve_threads(threads)) {}
@@ -85,6 +114,37 @@ class MpiExecutor final : public study::DesignExecutor {
       for (std::size_t j = 0; j < theirs.size(); ++j) out[theirs[j]] = problem.to_evaluation(std::move(got[j]));
     }
     return out;
+  }
+  // The samples in contiguous shares, rank r the r-th; rank 0 computes its
+  // own with the run it is in (`here`), the workers theirs after the same
+  // set-up, and the shares are joined in rank order.
+  decltype(WearReliabilityOptions::sample_executor) reliability_samples(const study::StudyProblem& problem,
+                                                                        std::span<const double> x) override {
+    if (job_.size() == 1) return {};
+    std::vector<double> design(x.begin(), x.end());
+    return [this, &problem, design](std::size_t n, const WearReliabilityOptions::SamplesHere& here) {
+      std::int64_t command = kReliabilitySamples;
+      std::string payload = study::encode_designs({design, {static_cast<double>(n)}});
+      broadcast(command, payload);
+      const auto [first, last] = sample_share(n, 0, job_.size());
+      SampleLives all = here(first, last);
+      std::string failure;
+      for (int r = 1; r < job_.size(); ++r) {
+        // Every share is received, also after a failure: the next command
+        // must find no message left over.
+        study::SampleLivesMessage m = study::decode_sample_lives(receive_bytes(r, kResultTag));
+        if (!m.failure.empty() && failure.empty())
+          failure = "MPI rank " + std::to_string(r) + " could not compute its Monte Carlo samples: " + m.failure;
+        all.lives.insert(all.lives.end(), std::make_move_iterator(m.lives.lives.begin()),
+                         std::make_move_iterator(m.lives.lives.end()));
+        all.criteria.insert(all.criteria.end(), std::make_move_iterator(m.lives.criteria.begin()),
+                            std::make_move_iterator(m.lives.criteria.end()));
+        all.interpolated += m.lives.interpolated;
+      }
+      if (!failure.empty()) throw std::runtime_error(failure);
+      all.processes = static_cast<unsigned>(job_.size());
+      return all;
+    };
   }
   unsigned workers() const override { return static_cast<unsigned>(job_.size()) * threads_; }
   std::string describe() const override {
@@ -165,6 +225,17 @@ int MpiJob::serve(const study::StudyProblem* problem, const std::string& why_not
     std::int64_t command = kStop;
     std::string payload;
     broadcast(command, payload);
+    if (command == kReliabilitySamples) {
+      const std::vector<std::vector<double>> parts = study::decode_designs(payload);
+      study::SampleLivesMessage m;
+      if (!problem || parts.size() != 2 || parts[1].size() != 1) {
+        m.failure = problem ? "a malformed Monte Carlo request" : "no study loaded";
+      } else {
+        m = reliability_share(*problem, parts[0], static_cast<std::size_t>(parts[1][0]), rank_, size_, pool);
+      }
+      send_bytes(study::encode_sample_lives(m), 0, kResultTag);
+      continue;
+    }
     if (command != kEvaluate) return 0;
     const std::vector<std::vector<double>> xs = study::decode_designs(payload);
     const std::vector<std::size_t> mine = share_of(xs.size(), rank_, size_);

@@ -12,6 +12,10 @@
 //  * a batch is a broadcast header {kEvaluate, bytes} and the encoded designs;
 //    design k goes to rank k % N (rank 0 computes its share meanwhile); each
 //    worker sends its results (kResultTag) in one message;
+//  * the Monte Carlo of a reliability study's design is a broadcast header
+//    {kReliabilitySamples, bytes}, the design and the sample count; rank r
+//    runs the same analysis set-up and its contiguous share of the samples
+//    and sends their lives (or why it could not) in one message;
 //  * the end is a broadcast header {kStop, 0}, sent once by rank 0 on every
 //    path out (the job's destructor), after which every rank finalizes.
 // A rank that dies takes the job down (mpirun's default): what rank 0 had

@@ -187,7 +187,9 @@ std::string wear_summary(const Drive& d, const WearReliabilityResult& r) {
   if (!r.lives.empty()) {
     const auto& s = r.summary;
     o << "  Monte Carlo: " << r.lives.size() << " samples (" << (d.reliability.sobol ? "Sobol" : "pseudo-random")
-      << ", seed " << r.seed_used << ", " << r.threads_used << " threads), " << s.failed_evaluations
+      << ", seed " << r.seed_used << ", " << r.threads_used << " threads"
+      << (r.processes_used > 1 ? " on each of " + std::to_string(r.processes_used) + " MPI ranks" : std::string())
+      << "), " << s.failed_evaluations
       << " failed evaluations, " << s.immediate_failures << " immediate failures\n";
     if (const statistics::CandidateFit* c = s.chosen_fit()) {
       o << "    life distribution: " << c->fit->distribution.describe() << " (s), KS D = "
@@ -354,6 +356,7 @@ std::string wear_json(const Drive& d, const WearReliabilityResult& r, const Wear
   j.key("fit_ms").value(r.fit_ms);
   j.key("total_ms").value(total_ms);
   j.key("threads").value(static_cast<int>(r.threads_used));
+  j.key("processes").value(static_cast<int>(r.processes_used));
   j.end_object();
   j.end_object();
   return j.str();

@@ -8,11 +8,14 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "rackopt/study/study_problem.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 
 namespace rackopt::study {
 
@@ -28,11 +31,23 @@ class DesignExecutor {
   virtual std::vector<DesignEvaluation> evaluate(const StudyProblem& problem,
                                                  const std::vector<std::vector<double>>& xs,
                                                  unsigned inner_threads) = 0;
+  // The Monte Carlo samples of a reliability study's design `x`, spread
+  // over the workers, each computing its share after the same set-up
+  // (WearReliabilityOptions::sample_executor); empty when this executor adds
+  // nothing to the calling process's own threads (the default).
+  virtual decltype(WearReliabilityOptions::sample_executor) reliability_samples(const StudyProblem& problem,
+                                                                             std::span<const double> x);
   // Workers that compute at once (threads or ranks).
   virtual unsigned workers() const = 0;
   // "1 thread", "2 threads", "2 MPI ranks": for the report.
   virtual std::string describe() const = 0;
 };
+
+// The wear reliability options of a reliability study's design: the
+// problem's (wear_reliability_options), with the study's sample count, seed
+// and bootstrap replicates, on `threads` threads. What every process of an
+// MPI job sets up alike.
+WearReliabilityOptions study_reliability_options(const StudySpec& spec, const Drive& design, unsigned threads);
 
 // Threads of this process (resolve_threads: 0 = every core). One design,
 // or one thread, runs on the calling thread.

@@ -120,4 +120,43 @@ std::vector<DesignMetrics> decode_metrics(std::string_view bytes) {
   return out;
 }
 
+std::string encode_sample_lives(const SampleLivesMessage& message) {
+  Writer w;
+  w.text(message.failure);
+  const SampleLives& s = message.lives;
+  w.count(s.lives.size());
+  for (const statistics::SampleResult& r : s.lives) {
+    w.count(static_cast<std::uint64_t>(r.status));
+    w.number(r.value);
+    w.text(r.code);
+    w.text(r.message);
+  }
+  w.count(s.criteria.size());
+  for (const std::string& c : s.criteria) w.text(c);
+  w.number(static_cast<double>(s.interpolated));  // a count the message need not be as long as
+  return w.take();
+}
+
+SampleLivesMessage decode_sample_lives(std::string_view bytes) {
+  Reader r(bytes);
+  SampleLivesMessage m;
+  m.failure = r.text();
+  SampleLives& s = m.lives;
+  s.lives.resize(r.count());
+  for (statistics::SampleResult& life : s.lives) {
+    const std::uint64_t status = r.count();
+    if (status > static_cast<std::uint64_t>(statistics::SampleResult::Status::kFailed))
+      throw std::runtime_error("design wire: an unknown sample status");
+    life.status = static_cast<statistics::SampleResult::Status>(status);
+    life.value = r.number();
+    life.code = r.text();
+    life.message = r.text();
+  }
+  s.criteria.resize(r.count());
+  for (std::string& c : s.criteria) c = r.text();
+  s.interpolated = static_cast<std::size_t>(r.number());
+  if (!r.done()) throw std::runtime_error("design wire: bytes after the sample lives");
+  return m;
+}
+
 }  // namespace rackopt::study

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rackopt/study/study_problem.hpp"
+#include "rackopt/wear_reliability/wear_reliability.hpp"
 
 namespace rackopt::study {
 
@@ -18,5 +19,14 @@ std::vector<std::vector<double>> decode_designs(std::string_view bytes);
 std::string encode_metrics(const std::vector<DesignMetrics>& results);
 // Throws std::runtime_error for bytes that are not a whole encoding.
 std::vector<DesignMetrics> decode_metrics(std::string_view bytes);
+
+// One share of a Monte Carlo's sample lives, or why it could not be
+// computed (`failure` not empty; `lives` then unused).
+struct SampleLivesMessage {
+  std::string failure;
+  SampleLives lives;
+};
+std::string encode_sample_lives(const SampleLivesMessage& message);
+SampleLivesMessage decode_sample_lives(std::string_view bytes);
 
 }  // namespace rackopt::study

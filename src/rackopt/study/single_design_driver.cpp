@@ -19,13 +19,11 @@ StudyStatus drive_single_design(const KindDriverContext& ctx, const std::optiona
   } else if (spec.kind == StudyKind::kReliability && start->design.evaluation.ok()) {
     try {
       const Drive design = base.drive_at(start->design.x);
-      WearReliabilityOptions wo = wear_reliability_options(design);
-      if (spec.metric_options.reliability_samples) wo.samples = *spec.metric_options.reliability_samples;
-      if (spec.metric_options.reliability_seed) wo.seed = *spec.metric_options.reliability_seed;
-      wo.threads = ledger.threads();
-      if (spec.metric_options.bootstrap_replicates)
-        wo.bootstrap_replicates = *spec.metric_options.bootstrap_replicates;
+      WearReliabilityOptions wo = study_reliability_options(spec, design, ledger.threads());
       wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
+      // The samples over the executor's workers (the ranks of an MPI job);
+      // empty for threads, which the analysis uses itself.
+      wo.sample_executor = ledger.executor().reliability_samples(base, start->design.x);
       // Everything recorded is committed; the analysis itself is not
       // recorded (--resume redoes it): Ctrl-C may end it at once.
       ledger.store().flush();

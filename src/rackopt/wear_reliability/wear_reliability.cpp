@@ -1,6 +1,7 @@
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -302,7 +303,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   }
 
   std::atomic<std::size_t> interpolated{0};
-  out.lives = statistics::evaluate_samples(n, threads, [&](std::size_t i) {
+  auto sample_life = [&](std::size_t i) {
     if (opt.stop && opt.stop()) return std::numeric_limits<double>::quiet_NaN();  // skipped, thrown below
     if (opt.progress) opt.progress->tick();
     if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
@@ -323,7 +324,36 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       years = r.life_years;
     }
     return years * kSecondsPerYear;
-  });
+  };
+  // Samples [first, last) on this process's threads.
+  auto here = [&](std::size_t first, std::size_t last) {
+    SampleLives share;
+    share.lives = statistics::evaluate_samples(last - first, threads,
+                                               [&](std::size_t j) { return sample_life(first + j); });
+    share.criteria.assign(out.criteria.begin() + static_cast<std::ptrdiff_t>(first),
+                          out.criteria.begin() + static_cast<std::ptrdiff_t>(last));
+    share.interpolated = interpolated.exchange(0);
+    return share;
+  };
+  if (opt.sample_share) {
+    // One share of another process's run: the same samples, the same lives.
+    const std::size_t first = std::min(opt.sample_share->first, n);
+    out.share_lives = here(first, std::clamp(opt.sample_share->second, first, n));
+    if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
+    return out;
+  }
+  if (opt.sample_executor && n > 0) {
+    SampleLives all = opt.sample_executor(n, here);
+    if (all.lives.size() != n || all.criteria.size() != n)
+      throw std::runtime_error("wear life at R: the sample executor returned " + std::to_string(all.lives.size()) +
+                               " lives for " + std::to_string(n) + " samples");
+    out.lives = std::move(all.lives);
+    out.criteria = std::move(all.criteria);
+    interpolated = all.interpolated;
+    out.processes_used = all.processes;
+  } else {
+    out.lives = statistics::evaluate_samples(n, threads, sample_life);
+  }
   if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
   tr.samples_interpolated = table || scaled_nominal ? interpolated.load() : 0;
   tr.samples_direct = n - tr.samples_interpolated;

@@ -34,6 +34,15 @@ namespace rackopt {
 
 class ProgressBar;
 
+// The Monte Carlo samples' part of a run: what the sample loop gives, for
+// every sample or for one share of them.
+struct SampleLives {
+  std::vector<statistics::SampleResult> lives;  // seconds, in sample order
+  std::vector<std::string> criteria;           // the end-of-life criterion of each sample
+  std::size_t interpolated = 0;                // of them, lives read from the life table or scaled
+  unsigned processes = 1;                      // processes that computed them (MPI ranks)
+};
+
 struct WearReliabilityOptions {
   std::optional<long> samples;  // overrides reliability.samples (>= 1)
   std::optional<long> seed;     // overrides reliability.seed (>= 0)
@@ -66,6 +75,18 @@ struct WearReliabilityOptions {
   // status is nullopt and samples_used 0. Otherwise (several inputs, or no
   // valid value) the samples are drawn as usual.
   bool exact_only = false;
+  // Samples [first, last) only: the run does the same set-up (the nominal
+  // life, the samples' inputs, the life table), computes those samples and
+  // returns at once with share_lives set (no summary, no exact results).
+  // What another process runs for its share of a Monte Carlo.
+  std::optional<std::pair<std::size_t, std::size_t>> sample_share;
+  // Every sample's life computed by several processes (the ranks of an MPI
+  // job, each running its share with sample_share): given the sample count
+  // and `here`, which computes samples [first, last) on this process's
+  // threads, returns what the sample loop alone would give, bit for bit.
+  // Empty: this process's threads.
+  using SamplesHere = std::function<SampleLives(std::size_t first, std::size_t last)>;
+  std::function<SampleLives(std::size_t samples, const SamplesHere& here)> sample_executor;
 };
 
 // The options a problem asks for: bootstrap_replicates, life_table and
@@ -144,6 +165,7 @@ struct WearReliabilityResult {
   // interpolating); fit_ms: summary + exact map, of which exact_ms the map.
   double nominal_ms = 0, samples_ms = 0, fit_ms = 0, exact_ms = 0;
   unsigned threads_used = 1;
+  unsigned processes_used = 1;  // processes that computed the samples (Options::sample_executor: MPI ranks)
   std::uint64_t seed_used = 0;  // the Monte Carlo seed in effect (options.seed, else reliability.seed)
   long samples_used = 0;        // the sample count in effect
   // A life at R >= 0.5 above the nominal life (wear_reliability/life_at_R_check.hpp),
@@ -151,6 +173,9 @@ struct WearReliabilityResult {
   // sampled summary (lower end of its interval) when more than one sample
   // was drawn.
   std::vector<std::string> warnings;
+  // Options::sample_share: that share's samples, first to last (the rest of
+  // the result is the set-up only).
+  std::optional<SampleLives> share_lives;
 };
 
 // Throws InputError when wear, duty or reliability is not configured enough
