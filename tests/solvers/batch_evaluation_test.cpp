@@ -40,6 +40,18 @@ class BatchLogged : public rs::Problem {
   bool reverse_;
 };
 
+// Two objectives, f1 = x^2 + y^2 and f2 = (x-2)^2 + y^2, batches logged.
+class BatchLoggedTwoCircles : public BatchLogged {
+ public:
+  BatchLoggedTwoCircles() : BatchLogged(false) {}
+  std::size_t num_objectives() const override { return 2; }
+  rs::Evaluation evaluate(std::span<const double> x) const override {
+    rs::Evaluation e;
+    e.objectives = {x[0] * x[0] + x[1] * x[1], (x[0] - 2) * (x[0] - 2) + x[1] * x[1]};
+    return e;
+  }
+};
+
 TEST(BatchEvaluation, FiniteDifferenceProbesGoTogether) {
   for (bool central : {false, true}) {
     BatchLogged p(false);
@@ -72,16 +84,7 @@ TEST(BatchEvaluation, ResultsAndRecordOrderDoNotDependOnHowABatchIsComputed) {
 }
 
 TEST(BatchEvaluation, Nsga2EvaluatesEachGenerationAsOneBatch) {
-  class TwoCircles : public BatchLogged {
-   public:
-    TwoCircles() : BatchLogged(false) {}
-    std::size_t num_objectives() const override { return 2; }
-    rs::Evaluation evaluate(std::span<const double> x) const override {
-      rs::Evaluation e;
-      e.objectives = {x[0] * x[0] + x[1] * x[1], (x[0] - 2) * (x[0] - 2) + x[1] * x[1]};
-      return e;
-    }
-  } p;
+  BatchLoggedTwoCircles p;
   rs::ParetoSettings s;
   s.method = rs::Scalarization::kPopulation;
   s.points = 8;
@@ -101,16 +104,7 @@ TEST(BatchEvaluation, Nsga2EvaluatesEachGenerationAsOneBatch) {
 // to the original problem as batches, and its anchors (one run per
 // objective) share rounds: batches of both anchors' probes.
 TEST(BatchEvaluation, ScalarizedFrontsBatchProbesAndAnchors) {
-  class TwoCircles : public BatchLogged {
-   public:
-    TwoCircles() : BatchLogged(false) {}
-    std::size_t num_objectives() const override { return 2; }
-    rs::Evaluation evaluate(std::span<const double> x) const override {
-      rs::Evaluation e;
-      e.objectives = {x[0] * x[0] + x[1] * x[1], (x[0] - 2) * (x[0] - 2) + x[1] * x[1]};
-      return e;
-    }
-  } p;
+  BatchLoggedTwoCircles p;
   rs::ParetoSettings s;
   s.method = rs::Scalarization::kWeightedSum;
   s.points = 5;
