@@ -66,6 +66,19 @@ struct ContactLaw {
     if (!(c > 0)) strip_too_wide(force);
     return c;
   }
+  // at(force) from the term at a nearby force it was evaluated at, without
+  // the logarithm: c(f) = c(f0) - slope ln(1 + u), u = f/f0 - 1, to u^3
+  // (error u^4/4 < 1e-20 for |u| <= 1e-5). Falls back on at() farther away,
+  // at the floor or where the term would not stay positive. The two-pair
+  // Newton ends with a step this small: the final terms then cost no logarithm.
+  double at_near(double force, double known_force, double known_term) const {
+    const double u = (force - known_force) / known_force;
+    if (known_force > floor && force > floor && std::abs(u) <= 1e-5) {
+      const double c = known_term - slope * (u * (1.0 - u * (0.5 - u * (1.0 / 3.0))));
+      if (c > 0) return c;
+    }
+    return at(force);
+  }
   // -dc/d ln f at `force` (0 below the floor).
   double slope_at(double force) const { return force > floor ? slope : 0.0; }
   [[noreturn]] static void strip_too_wide(double force);
