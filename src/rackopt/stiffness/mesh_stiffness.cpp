@@ -491,7 +491,9 @@ struct MeshStiffnessModel::Impl {
       double lo = 0, hi = F;
       for (int it = 0; it < 60; ++it) {
         const double f2 = F - f1;
-        const double c1f = law[0].at(f1), c2f = law[1].at(f2);  // floored below law.floor
+        // Floored below law.floor; after the first step from the last terms.
+        const double c1f = it == 0 ? law[0].at(f1) : law[0].at_near(f1, f1_known, c1_known);
+        const double c2f = it == 0 ? law[1].at(f2) : law[1].at_near(f2, F - f1_known, c2_known);
         f1_known = f1;
         c1_known = c1f;
         c2_known = c2f;
