@@ -410,26 +410,32 @@ struct MeshStiffnessModel::Impl {
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
     for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
-      PairState& p = st.pairs.emplace_back();  // built in place: no copy of the pair
-      p.rack_tooth = j;
-      p.pinion_tooth = pinion_tooth_of(j);
-      p.slot = j % slots;
-      if (p.slot < 0) p.slot += slots;
-      p.s = std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol);
-      p.s = std::clamp(p.s, s_start, s_end);
-      p.x = x_of(j, X);
-      const double x_side = x_of(j, xm);
-      p.segment = floor_div_int(x_side / span);
-      p.a = std::clamp(p.x - p.segment * span, 0.0, span);
-      p.e = e_at_s0 - p.s * sa;  // neutral_axis_depth + h_f2 + contact height above the datum
-      const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
-      p.pinion = lp.teeth.pinion;
-      p.fillet = lp.teeth.fillet;
-      p.rack = lp.teeth.rack;
-      p.rack_foundation = lp.teeth.rack_foundation;
-      p.spalled = lp.spalled;
-      if (relief) p.relief = relief->at(p.s);
-      p.hertz = lp.contact_at_load;
+      int slot = j % slots;
+      if (slot < 0) slot += slots;
+      const int pinion_tooth = pinion_tooth_of(j);
+      const double s = std::clamp(std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol), s_start, s_end);
+      const double x = x_of(j, X);
+      const int segment = floor_div_int(x_of(j, xm) / span);
+      const LocalParts& lp = parts_of(s, pinion_tooth, j);
+      // Every field written once: value-initialising the pair first (a
+      // 160-byte rep stos) was the sample assembly's slowest instruction.
+      st.pairs.push_back(PairState{.rack_tooth = j,
+                                   .pinion_tooth = pinion_tooth,
+                                   .slot = slot,
+                                   .s = s,
+                                   .x = x,
+                                   .segment = segment,
+                                   .a = std::clamp(x - segment * span, 0.0, span),
+                                   .e = e_at_s0 - s * sa,  // neutral_axis_depth + h_f2 + contact height above the datum
+                                   .pinion = lp.teeth.pinion,
+                                   .fillet = lp.teeth.fillet,
+                                   .hertz = lp.contact_at_load,
+                                   .rack = lp.teeth.rack,
+                                   .rack_foundation = lp.teeth.rack_foundation,
+                                   .body = 0,
+                                   .spalled = lp.spalled,
+                                   .relief = relief ? relief->at(s) : 0.0,
+                                   .load_share = 0});
       if (st.pairs.size() <= 2) law2[st.pairs.size() - 1] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
