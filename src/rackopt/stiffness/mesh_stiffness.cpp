@@ -402,41 +402,42 @@ struct MeshStiffnessModel::Impl {
     st.stiffness = 0;
     st.approach = 0;
     st.local_stiffness = 0;
-    st.pairs.clear();
     std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
     const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
-    for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
-      int slot = j % slots;
-      if (slot < 0) slot += slots;
-      const int pinion_tooth = pinion_tooth_of(j);
-      const double s = std::clamp(std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol), s_start, s_end);
-      const double x = x_of(j, X);
-      const int segment = floor_div_int(x_of(j, xm) / span);
-      const LocalParts& lp = parts_of(s, pinion_tooth, j);
-      // Every field written once: value-initialising the pair first (a
-      // 160-byte rep stos) was the sample assembly's slowest instruction.
-      st.pairs.push_back(PairState{.rack_tooth = j,
-                                   .pinion_tooth = pinion_tooth,
-                                   .slot = slot,
-                                   .s = s,
-                                   .x = x,
-                                   .segment = segment,
-                                   .a = std::clamp(x - segment * span, 0.0, span),
-                                   .e = e_at_s0 - s * sa,  // neutral_axis_depth + h_f2 + contact height above the datum
-                                   .pinion = lp.teeth.pinion,
-                                   .fillet = lp.teeth.fillet,
-                                   .hertz = lp.contact_at_load,
-                                   .rack = lp.teeth.rack,
-                                   .rack_foundation = lp.teeth.rack_foundation,
-                                   .body = 0,
-                                   .spalled = lp.spalled,
-                                   .relief = relief ? relief->at(s) : 0.0,
-                                   .load_share = 0});
-      if (st.pairs.size() <= 2) law2[st.pairs.size() - 1] = lp.contact;
+    // The pairs already in `st` are overwritten field by field: resize()
+    // value-initialises only pairs it adds (the storage of a reused scratch
+    // state mostly has them), and building each pair apart and copying it
+    // in stalled on the copy's loads (both were the sample assembly's
+    // slowest instructions).
+    static_assert(sizeof(PairState) == 160, "write every field of PairState below");
+    st.pairs.resize(static_cast<std::size_t>(std::max(j_hi - j_lo + 1, 0)));
+    std::size_t k = 0;
+    for (int j = j_hi; j >= j_lo; --j, ++k) {  // descending s: the pair nearest the pinion tip first
+      PairState& p = st.pairs[k];
+      p.rack_tooth = j;
+      p.pinion_tooth = pinion_tooth_of(j);
+      p.slot = j % slots;
+      if (p.slot < 0) p.slot += slots;
+      p.s = std::clamp(std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol), s_start, s_end);
+      p.x = x_of(j, X);
+      p.segment = floor_div_int(x_of(j, xm) / span);
+      p.a = std::clamp(p.x - p.segment * span, 0.0, span);
+      p.e = e_at_s0 - p.s * sa;  // neutral_axis_depth + h_f2 + contact height above the datum
+      const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
+      p.pinion = lp.teeth.pinion;
+      p.fillet = lp.teeth.fillet;
+      p.hertz = lp.contact_at_load;
+      p.rack = lp.teeth.rack;
+      p.rack_foundation = lp.teeth.rack_foundation;
+      p.body = 0;
+      p.spalled = lp.spalled;
+      p.relief = relief ? relief->at(p.s) : 0.0;
+      p.load_share = 0;
+      if (k < 2) law2[k] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
         st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2, hint)) {
