@@ -907,8 +907,13 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
     if (keep_pairs) {
       out.samples.push_back(im.state(pr.X, pr.side, parts, &sweep));
     } else {
-      im.state_into(scratch, pr.X, pr.side, parts, &sweep);
-      out.samples.push_back(MeshState{scratch.travel, scratch.stiffness, scratch.approach, scratch.local_stiffness, {}});
+      // Computed in the sample itself with the scratch's pairs lent to it
+      // and taken back: copying the sample's values out of the scratch
+      // stalled on loads of what the solve had just stored.
+      MeshState& sample = out.samples.emplace_back();
+      sample.pairs.swap(scratch.pairs);
+      im.state_into(sample, pr.X, pr.side, parts, &sweep);
+      sample.pairs.swap(scratch.pairs);
     }
   }
 
