@@ -32,10 +32,13 @@ double ks_upper(std::span<const double> v, double rho, double scale, double sign
 double power_mean(std::span<const double> v, double rho, double sign) {
   double extreme = v[0];
   for (double x : v) extreme = sign * x > sign * extreme ? x : extreme;
-  // (v_i / extreme)^p < 1e-20 where p ln(ratio) < ln(1e-20).
+  // (v_i / extreme)^p < 1e-20 where p ln(ratio) < ln(1e-20); the values
+  // that far from the extreme are told apart without a division.
   const double negligible = std::exp(std::log(1e-20) / rho);
+  const double bound = sign > 0 ? extreme * negligible : extreme / negligible;
   double sum = 0;
   for (double x : v) {
+    if (sign * x < sign * bound) continue;
     const double ratio = sign > 0 ? x / extreme : extreme / x;  // in (0, 1]
     if (ratio >= negligible) sum += std::pow(ratio, rho);
   }

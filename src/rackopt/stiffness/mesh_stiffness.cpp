@@ -521,7 +521,11 @@ struct MeshStiffnessModel::Impl {
         // s_2/f_2; once that is below 1e-18 F the next step would not move
         // f1 (saves the step that only confirmed convergence).
         if (step <= 1e-9 * F) break;
-        if (newton && in_bracket && std::abs(s2 / f2 - s1 / f1_known) * step * step <= 2e-18 * F * slope) break;
+        // (|s_2 f_1 - s_1 f_2| / (f_1 f_2) written without its divisions.)
+        if (newton && in_bracket &&
+            std::abs(s2 * f1_known - s1 * f2) * step * step <= 2e-18 * F * slope * f1_known * f2) {
+          break;
+        }
       }
     }
     const double f2 = F - f1;
@@ -721,14 +725,14 @@ struct MeshStiffnessModel::Impl {
       return;
     }
     if (n == 1) {
-      // One pair in mesh (every single-pair zone): the Cholesky solve below
-      // on the 1 x 1 matrix c is l = sqrt(c), f = (1 / l) / l, written out
-      // with the same operations so that K keeps its last bits.
+      // One pair in mesh (every single-pair zone): K = 1 / c, correctly
+      // rounded. (The Cholesky solve below gives (1 / sqrt(c)) / sqrt(c),
+      // within an ulp of it, through a square root and a second dependent
+      // division.)
       PairState& p = st.pairs[0];
       const double c = p.local() + p.body;
       if (c > 0) {
-        const double l = std::sqrt(c);
-        const double K = (1.0 / l) / l;
+        const double K = 1.0 / c;
         if (K > 0 && std::isfinite(K)) {
           st.stiffness = K;
           p.load_share = 1.0;
