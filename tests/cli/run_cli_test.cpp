@@ -64,7 +64,9 @@ bool wait_for_progress(pid_t pid, const std::string& err_file, long done) {
 }
 
 // A 20 x 20 grid sweep on the rack railway paper's problem with a fine travel sampling
-// (a few ms per design, so that a run lasts long enough to be interrupted).
+// (a few ms per design, so that a run lasts long enough to be interrupted: the
+// progress bar, which the interrupting tests wait for, starts drawing after
+// one second).
 // The objective has a fixed scale, so no start design is evaluated: the
 // study needs exactly kSweepSize evaluations.
 constexpr std::size_t kSweepSize = 400;
@@ -72,7 +74,7 @@ std::string write_sweep_study(const std::string& dir) {
   const std::string path = dir + "/sweep.yaml";
   std::ofstream(path) << "study: {name: resume sweep, kind: sweep, seed: 3}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
-                      << "problem_set:\n  numerics.positions_per_period: 800\n"
+                      << "problem_set:\n  numerics.positions_per_period: 2000\n"
                       << "variables:\n"
                       << "  rack.span: {lower: 1.2 m, upper: 3 m}\n"
                       << "  pinion.pressure_angle: {lower: 17 deg, upper: 25 deg}\n"
@@ -244,7 +246,7 @@ std::string write_undercut_first_study(const std::string& dir) {
   const std::string path = dir + "/undercut_first.yaml";
   std::ofstream(path) << "study: {name: undercut first, kind: sweep, seed: 3}\n"
                       << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
-                      << "problem_set:\n  numerics.positions_per_period: 800\n"
+                      << "problem_set:\n  numerics.positions_per_period: 2000\n"
                       << "variables:\n"
                       << "  pinion.pressure_angle: {lower: 15 deg, upper: 25 deg}\n"
                       << "  rack.span: {lower: 1.2 m, upper: 3 m}\n"

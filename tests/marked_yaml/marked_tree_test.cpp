@@ -11,6 +11,23 @@
 namespace rackopt {
 namespace {
 
+bool same_mark(const SourceMark& a, const SourceMark& b) {
+  return a.file == b.file && a.line == b.line && a.column == b.column;
+}
+
+bool same_tree(const MarkedNode& a, const MarkedNode& b) {
+  if (a.type != b.type || a.scalar != b.scalar || !same_mark(a.mark, b.mark)) return false;
+  if (a.entries.size() != b.entries.size() || a.items.size() != b.items.size()) return false;
+  for (std::size_t i = 0; i < a.entries.size(); ++i) {
+    const MarkedEntry &x = a.entries[i], &y = b.entries[i];
+    if (x.key != y.key || !same_mark(x.key_mark, y.key_mark) || !same_tree(x.value, y.value)) return false;
+  }
+  for (std::size_t i = 0; i < a.items.size(); ++i) {
+    if (!same_tree(a.items[i], b.items[i])) return false;
+  }
+  return true;
+}
+
 const char* const kNested =
     "pinion:\n"                     // 1
     "  teeth: 20\n"                 // 2
@@ -83,6 +100,21 @@ TEST(MarkedTree, OverridesCarryTheCommandLineMark) {
   EXPECT_EQ(module->scalar, "10 mm");
   EXPECT_EQ(module->mark.file, "<command line>");
   EXPECT_EQ(override_key(" pinion.module = 10 mm"), "pinion.module");
+}
+
+// A design value set without the YAML parser must leave the tree exactly as
+// the --set path does: the loader's messages quote these marks.
+TEST(MarkedTree, PlainScalarIsTheOverrideWithoutTheParser) {
+  for (const char* key : {"pinion.teeth", "pinion.module", "pinion.tip_relief.amount", "faults[1].tooth",
+                          "mounting.clearance"}) {
+    for (const char* text : {"20", "1.2500000000000001e-02 m", "-3.0000000000000001e-05 m"}) {
+      MarkedNode parsed = parse_marked_yaml(kNested, "t.yaml");
+      MarkedNode direct = parsed;
+      apply_override(parsed, std::string(key) + "=" + text);
+      set_plain_scalar(direct, key, text);
+      EXPECT_TRUE(same_tree(parsed, direct)) << key << " = " << text;
+    }
+  }
 }
 
 }  // namespace

@@ -197,15 +197,21 @@ TEST(PinionTooth, QuadratureOrderConvergesToAdaptive) {
   for (double s : {0.1 * g.path.s_end, g.path.s_end}) {
     const double exact = ref.at(s).total();
     double last_err = 1.0;
-    for (int order : {4, 8, 16, 32}) {
+    for (int order : {4, 8, 12}) {
       Numerics n;
       n.quadrature_order = order;
       const double err = std::fabs(PinionToothCompliance(g, p, Effects{}, n).at(s).total() - exact) / exact;
       EXPECT_LE(err, last_err) << "order " << order;
-      if (order >= 16) {
-        EXPECT_LT(err, 1e-9) << "order " << order;
-      }
       last_err = err;
+    }
+    // From order 16 the involute integrals are tabulated per tooth instead of
+    // integrated per contact: at rounding level against QAGS for every order,
+    // so there is no convergence in the order left to check.
+    for (int order : {16, 32}) {
+      Numerics n;
+      n.quadrature_order = order;
+      const double err = std::fabs(PinionToothCompliance(g, p, Effects{}, n).at(s).total() - exact) / exact;
+      EXPECT_LT(err, 1e-12) << "order " << order;
     }
   }
 }

@@ -179,18 +179,12 @@ std::string override_key(const std::string& assignment) {
   return trim(eq == std::string::npos ? assignment : assignment.substr(0, eq));
 }
 
-void apply_override(MarkedNode& root, const std::string& assignment) {
+namespace {
+
+// Puts `value` at `path` as a --set assignment does (a null value removes the key).
+void set_at_path(MarkedNode& root, const std::string& path, MarkedNode value) {
   const SourceMark where{kCommandLine, 0, 0};
-  const std::size_t eq = assignment.find('=');
-  const std::string path = override_key(assignment);
-  if (eq == std::string::npos) {
-    throw InputError(where, path,
-                     "'" + assignment + "' is not an assignment; write --set key.path=value, e.g. "
-                     "--set rack.span=\"1.2 m\"");
-  }
-  if (path.empty()) throw InputError(where, "", "'" + assignment + "': no key before '='");
   const std::vector<PathStep> steps = split_path(path);
-  MarkedNode value = parse_marked_yaml(assignment.substr(eq + 1), kCommandLine, true);
   const bool remove = value.is_null();
 
   MarkedNode* node = &root;
@@ -258,6 +252,29 @@ void apply_override(MarkedNode& root, const std::string& assignment) {
     }
   }
   *node = std::move(value);
+}
+
+}  // namespace
+
+void apply_override(MarkedNode& root, const std::string& assignment) {
+  const SourceMark where{kCommandLine, 0, 0};
+  const std::size_t eq = assignment.find('=');
+  const std::string path = override_key(assignment);
+  if (eq == std::string::npos) {
+    throw InputError(where, path,
+                     "'" + assignment + "' is not an assignment; write --set key.path=value, e.g. "
+                     "--set rack.span=\"1.2 m\"");
+  }
+  if (path.empty()) throw InputError(where, "", "'" + assignment + "': no key before '='");
+  set_at_path(root, path, parse_marked_yaml(assignment.substr(eq + 1), kCommandLine, true));
+}
+
+void set_plain_scalar(MarkedNode& root, const std::string& key_path, std::string text) {
+  MarkedNode value;
+  value.type = MarkedNode::Type::kScalar;
+  value.scalar = std::move(text);
+  value.mark = SourceMark{kCommandLine, 0, 0};
+  set_at_path(root, key_path, std::move(value));
 }
 
 void merge_over(MarkedNode& base, const MarkedNode& patch) {

@@ -19,4 +19,14 @@ namespace rackopt::metrics {
 double ks_min(std::span<const double> values, double rho, double scale);
 double ks_max(std::span<const double> values, double rho, double scale);
 
+// The same on the logarithms of positive values, back in the values:
+// exp(ks_min(ln v, rho, 1)) = (sum v_i^-rho)^(-1/rho) and
+// exp(ks_max(ln v, rho, 1)) = (sum v_i^rho)^(1/rho), the power means, from the
+// ratios to the extreme (no logarithm per value). Terms below 1e-20 of the
+// extreme's own (which is 1) are left out: together they change the sum by
+// less than its rounding. Throws InputError as ks_min for an empty span, a
+// non-finite value or rho <= 0; the values must be positive.
+double power_mean_min(std::span<const double> positive_values, double rho);
+double power_mean_max(std::span<const double> positive_values, double rho);
+
 }  // namespace rackopt::metrics

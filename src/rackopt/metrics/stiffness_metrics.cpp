@@ -22,29 +22,28 @@ constexpr ParameterSpec kRho{ParameterSpec::Use::kOptional, "rho", 500.0, 0.0, 1
 struct KsBounds {
   double lo = 0, hi = 0;
 };
-// ln k of every sample and of the refined extremes.
-std::vector<double> ln_stiffness(const StiffnessCurve& c) {
-  std::vector<double> lnk;
-  lnk.reserve(c.samples.size() + 2);
+// k of every sample and of the refined extremes.
+std::vector<double> stiffness_values(const StiffnessCurve& c) {
+  std::vector<double> k;
+  k.reserve(c.samples.size() + 2);
   bool positive = c.k_min > 0;
   for (const MeshState& s : c.samples) {
     positive = positive && s.stiffness > 0;
-    if (positive) lnk.push_back(std::log(s.stiffness));
+    k.push_back(s.stiffness);
   }
   if (!positive) {
     throw DesignError("non_finite", "mesh stiffness not positive somewhere: the KS aggregate of ln k is undefined");
   }
-  lnk.push_back(std::log(c.k_min));
-  lnk.push_back(std::log(c.k_max));
-  return lnk;
+  k.push_back(c.k_min);
+  k.push_back(c.k_max);
+  return k;
 }
-// Each metric computes only the side it reports (an exponential per sample
-// and side).
-double ks_lower_bound(const StiffnessCurve& c, double rho) { return std::exp(ks_min(ln_stiffness(c), rho, 1.0)); }
-double ks_upper_bound(const StiffnessCurve& c, double rho) { return std::exp(ks_max(ln_stiffness(c), rho, 1.0)); }
+// Each metric computes only the side it reports.
+double ks_lower_bound(const StiffnessCurve& c, double rho) { return power_mean_min(stiffness_values(c), rho); }
+double ks_upper_bound(const StiffnessCurve& c, double rho) { return power_mean_max(stiffness_values(c), rho); }
 KsBounds ks_bounds(const StiffnessCurve& c, double rho) {
-  const std::vector<double> lnk = ln_stiffness(c);
-  return {std::exp(ks_min(lnk, rho, 1.0)), std::exp(ks_max(lnk, rho, 1.0))};
+  const std::vector<double> k = stiffness_values(c);
+  return {power_mean_min(k, rho), power_mean_max(k, rho)};
 }
 
 }  // namespace

@@ -36,7 +36,8 @@ void set_problem_value(ProblemTree& tree, const std::string& key_path, double va
   } else {
     text = format_number(value_si, 17) + " " + si_unit(*kind);
   }
-  apply_override(tree.root, key_path + "=" + text);
+  // A number (sign, digits, '.', 'e') and a unit name: YAML reads it as itself.
+  set_plain_scalar(tree.root, key_path, std::move(text));
 }
 
 Drive drive_with_values(const ProblemTree& tree, std::span<const std::pair<std::string, double>> values) {

@@ -1,6 +1,8 @@
 #include "rackopt/problem/problem_key_schema.hpp"
 
 #include <stdexcept>
+#include <string_view>
+#include <unordered_map>
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/statistics/goodness_of_fit.hpp"  // kMinBootstrapReplicates
@@ -135,10 +137,15 @@ constexpr KeySpec kKeySpecs[] = {
 }  // namespace
 
 const NumberRule* find_problem_key_rule(std::string_view schema_path) {
-  for (const auto& s : kKeySpecs) {
-    if (schema_path == s.pattern) return &s.rule;
-  }
-  return nullptr;
+  // Every number a design's Drive reads looks its rule up here: a hash map
+  // built once instead of a scan of the whole table by string comparison.
+  static const auto by_pattern = [] {
+    std::unordered_map<std::string_view, const NumberRule*> map;
+    for (const auto& s : kKeySpecs) map.emplace(s.pattern, &s.rule);  // the first of a pattern wins, as in a scan
+    return map;
+  }();
+  const auto it = by_pattern.find(schema_path);
+  return it == by_pattern.end() ? nullptr : it->second;
 }
 
 ReaderStyle problem_reader_style(std::string schema_path) {

@@ -117,6 +117,45 @@ class LocalCache {
   std::size_t count_ = 0;
 };
 
+// Where the two-pair Newton of the next sample starts: the first pair's
+// force at the last one or two samples with the same two pairs in mesh.
+// Consecutive samples of a curve are close, so the start extrapolated from
+// them is far nearer the solution than the linear solution at half the load
+// (about 1e-4 F against 1e-2 F): one or two steps instead of three or four.
+// The converged forces then depend on the start in their last bits only.
+class LoadShareHint {
+ public:
+  // A start for the pair on rack tooth `first_rack_tooth` at travel X, or
+  // nothing when the last sample had other pairs.
+  std::optional<double> start(int first_rack_tooth, double X) const {
+    if (count_ == 0 || rack_tooth_ != first_rack_tooth) return std::nullopt;
+    if (count_ == 1 || x_[0] == x_[1]) return f1_[0];
+    // Linear extrapolation, not beyond twice the last spacing (the extreme
+    // refinement and the breakpoints jump about).
+    const double h = x_[0] - x_[1], d = X - x_[0];
+    if (std::abs(d) > 2.0 * std::abs(h)) return f1_[0];
+    return f1_[0] + (f1_[0] - f1_[1]) * (d / h);
+  }
+  void record(int first_rack_tooth, double X, double f1) {
+    if (count_ > 0 && rack_tooth_ == first_rack_tooth) {
+      x_[1] = x_[0];
+      f1_[1] = f1_[0];
+      count_ = 2;
+    } else {
+      count_ = 1;
+    }
+    rack_tooth_ = first_rack_tooth;
+    x_[0] = X;
+    f1_[0] = f1;
+  }
+  void forget() { count_ = 0; }
+
+ private:
+  int rack_tooth_ = 0;
+  int count_ = 0;
+  std::array<double, 2> x_{}, f1_{};  // the last sample first
+};
+
 int floor_div_int(double v) { return static_cast<int>(std::floor(v)); }
 
 // std::llround(v) (halves away from zero) without the library call, for
@@ -347,10 +386,10 @@ struct MeshStiffnessModel::Impl {
   // Pairs in mesh at X (membership decided at X + side*eps so that the left
   // and right limits at a discontinuity can both be asked for).
   template <class Parts>
-  MeshState state(double X, int side, Parts&& parts_of) const {
+  MeshState state(double X, int side, Parts&& parts_of, LoadShareHint* hint = nullptr) const {
     MeshState st;
     st.pairs.reserve(static_cast<std::size_t>(slots) + 1);
-    state_into(st, X, side, parts_of);
+    state_into(st, X, side, parts_of, hint);
     return st;
   }
 
@@ -358,45 +397,53 @@ struct MeshStiffnessModel::Impl {
   // every sample into one scratch state and so allocates nothing per sample
   // once the scratch holds the most pairs in mesh.
   template <class Parts>
-  void state_into(MeshState& st, double X, int side, Parts&& parts_of) const {
+  void state_into(MeshState& st, double X, int side, Parts&& parts_of, LoadShareHint* hint = nullptr) const {
     st.travel = X;
     st.stiffness = 0;
     st.approach = 0;
     st.local_stiffness = 0;
-    st.pairs.clear();
     std::array<ContactLaw, 2> law2{};
     const double eps_x = 1e-9 * pitch;
     const double xm = X + (side < 0 ? -eps_x : eps_x);
     const int j_lo = static_cast<int>(std::ceil((s_start + xm * ca - A0) / pb));
     const int j_hi = static_cast<int>(std::floor((s_end + xm * ca - A0) / pb));
     const double rb_tol = 1e-12 * pb;
-    for (int j = j_hi; j >= j_lo; --j) {  // descending s: the pair nearest the pinion tip first
-      PairState& p = st.pairs.emplace_back();  // built in place: no copy of the pair
+    // The pairs already in `st` are overwritten field by field: resize()
+    // value-initialises only pairs it adds (the storage of a reused scratch
+    // state mostly has them), and building each pair apart and copying it
+    // in stalled on the copy's loads (both were the sample assembly's
+    // slowest instructions).
+    static_assert(sizeof(PairState) == 160, "write every field of PairState below");
+    st.pairs.resize(static_cast<std::size_t>(std::max(j_hi - j_lo + 1, 0)));
+    std::size_t k = 0;
+    for (int j = j_hi; j >= j_lo; --j, ++k) {  // descending s: the pair nearest the pinion tip first
+      PairState& p = st.pairs[k];
       p.rack_tooth = j;
       p.pinion_tooth = pinion_tooth_of(j);
       p.slot = j % slots;
       if (p.slot < 0) p.slot += slots;
-      p.s = std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol);
-      p.s = std::clamp(p.s, s_start, s_end);
+      p.s = std::clamp(std::clamp(s_of(j, X), s_start - rb_tol, s_end + rb_tol), s_start, s_end);
       p.x = x_of(j, X);
-      const double x_side = x_of(j, xm);
-      p.segment = floor_div_int(x_side / span);
+      p.segment = floor_div_int(x_of(j, xm) / span);
       p.a = std::clamp(p.x - p.segment * span, 0.0, span);
       p.e = e_at_s0 - p.s * sa;  // neutral_axis_depth + h_f2 + contact height above the datum
       const LocalParts& lp = parts_of(p.s, p.pinion_tooth, j);
       p.pinion = lp.teeth.pinion;
       p.fillet = lp.teeth.fillet;
+      p.hertz = lp.contact_at_load;
       p.rack = lp.teeth.rack;
       p.rack_foundation = lp.teeth.rack_foundation;
+      p.body = 0;
       p.spalled = lp.spalled;
-      if (relief) p.relief = relief->at(p.s);
-      p.hertz = lp.contact_at_load;
-      if (st.pairs.size() <= 2) law2[st.pairs.size() - 1] = lp.contact;
+      p.relief = relief ? relief->at(p.s) : 0.0;
+      p.load_share = 0;
+      if (k < 2) law2[k] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
-        st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2)) {
+        st.pairs[1].relief <= 0 && two_pairs_load_dependent(st, law2, hint)) {
       return;
     }
+    if (hint) hint->forget();
     solve(st);
     if (pair.contact_depends_on_force() && st.pairs.size() > 1) load_dependent_contact(st, parts_of);
   }
@@ -411,9 +458,10 @@ struct MeshStiffnessModel::Impl {
   // and g rises with f1 (g' = t_1 + t_2 - 2x, the tangent compliances, > 0
   // for a positive definite pair). g(0) >= 0 means the first pair opens,
   // g(F) <= 0 the second. Newton from the linear solution, kept inside its
-  // bracket. Returns false (the caller takes the general path) when the
-  // pair matrix is not positive definite.
-  bool two_pairs_load_dependent(MeshState& st, const std::array<ContactLaw, 2>& law) const {
+  // bracket, or from the hint's extrapolation of the previous samples. Returns
+  // false (the caller takes the general path) when the pair matrix is not
+  // positive definite.
+  bool two_pairs_load_dependent(MeshState& st, const std::array<ContactLaw, 2>& law, LoadShareHint* hint) const {
     PairState& p1 = st.pairs[0];
     PairState& p2 = st.pairs[1];
     const double F = drive.load.force;
@@ -428,38 +476,68 @@ struct MeshStiffnessModel::Impl {
     const double g0 = x * F - (a2 + c2F) * F, gF = (a1 + c1F) * F - x * F;
     if (!(gF > g0)) return false;
     double f1;
+    // The last terms evaluated and their forces (none yet: NaN).
+    double f1_known = std::numeric_limits<double>::quiet_NaN(), c1_known = 0, c2_known = 0;
     if (g0 >= 0) {
       f1 = 0;
     } else if (gF <= 0) {
       f1 = F;
     } else {
-      // Start: the linear solution with each term at half the load, which
-      // the law puts ln 2 times its slope above the term at F.
-      const double c1 = a1 + c1F + law[0].slope_at(0.5 * F) * std::numbers::ln2;
-      const double c2 = a2 + c2F + law[1].slope_at(0.5 * F) * std::numbers::ln2;
-      const double den = c1 + c2 - 2 * x;
-      if (!(den > 0)) return false;
-      f1 = std::clamp(F * (c2 - x) / den, 0.0, F);
+      const std::optional<double> warm = hint ? hint->start(p1.rack_tooth, st.travel) : std::nullopt;
+      if (warm && *warm > 0 && *warm < F) {
+        f1 = *warm;
+      } else {
+        // Start: the linear solution with each term at half the load, which
+        // the law puts ln 2 times its slope above the term at F.
+        const double c1 = a1 + c1F + law[0].slope_at(0.5 * F) * std::numbers::ln2;
+        const double c2 = a2 + c2F + law[1].slope_at(0.5 * F) * std::numbers::ln2;
+        const double den = c1 + c2 - 2 * x;
+        if (!(den > 0)) return false;
+        f1 = std::clamp(F * (c2 - x) / den, 0.0, F);
+      }
       double lo = 0, hi = F;
       for (int it = 0; it < 60; ++it) {
         const double f2 = F - f1;
-        const double c1f = law[0].at(f1), c2f = law[1].at(f2);  // floored below law.floor
+        // Floored below law.floor; after the first step from the last terms.
+        const double c1f = it == 0 ? law[0].at(f1) : law[0].at_near(f1, f1_known, c1_known);
+        const double c2f = it == 0 ? law[1].at(f2) : law[1].at_near(f2, F - f1_known, c2_known);
+        f1_known = f1;
+        c1_known = c1f;
+        c2_known = c2f;
         const double gv = (a1 + c1f) * f1 - (a2 + c2f) * f2 + x * (F - 2 * f1);
         if (gv < 0) lo = f1;
         else hi = f1;
-        const double slope = a1 + c1f - law[0].slope_at(f1) + a2 + c2f - law[1].slope_at(f2) - 2 * x;
-        double next = slope > 0 ? f1 - gv / slope : 0.5 * (lo + hi);
-        if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);  // keep the bracket
+        const double s1 = law[0].slope_at(f1), s2 = law[1].slope_at(f2);
+        const double slope = a1 + c1f - s1 + a2 + c2f - s2 - 2 * x;
+        const bool newton = slope > 0;
+        double next = newton ? f1 - gv / slope : 0.5 * (lo + hi);
+        const bool in_bracket = next >= lo && next <= hi;
+        if (!in_bracket) next = 0.5 * (lo + hi);  // keep the bracket
         const double step = std::abs(next - f1);
         f1 = next;
         // Newton's error squares each step: a step of 1e-9 F leaves about
-        // 1e-18 F (as load_dependent_contact).
+        // 1e-18 F (as load_dependent_contact). Sooner: the error after a
+        // Newton step is about |g''| / (2 g') step^2, with g'' = -s_1/f_1 +
+        // s_2/f_2; once that is below 1e-18 F the next step would not move
+        // f1 (saves the step that only confirmed convergence).
         if (step <= 1e-9 * F) break;
+        // (|s_2 f_1 - s_1 f_2| / (f_1 f_2) written without its divisions.)
+        if (newton && in_bracket &&
+            std::abs(s2 * f1_known - s1 * f2) * step * step <= 2e-18 * F * slope * f1_known * f2) {
+          break;
+        }
       }
     }
     const double f2 = F - f1;
-    p1.hertz = law[0].at(f1);
-    p2.hertz = law[1].at(f2);
+    if (f1 > 0 && f1 < F) {
+      p1.hertz = law[0].at_near(f1, f1_known, c1_known);
+      p2.hertz = law[1].at_near(f2, F - f1_known, c2_known);
+      if (hint) hint->record(p1.rack_tooth, st.travel, f1);
+    } else {
+      p1.hertz = law[0].at(f1);
+      p2.hertz = law[1].at(f2);
+      if (hint) hint->forget();
+    }
     // The common approach, from the loaded pair(s).
     const double approach = f1 > 0 ? (a1 + p1.hertz) * f1 + x * f2 : (a2 + p2.hertz) * f2 + x * f1;
     if (!(approach > 0) || !std::isfinite(approach)) return false;
@@ -647,14 +725,14 @@ struct MeshStiffnessModel::Impl {
       return;
     }
     if (n == 1) {
-      // One pair in mesh (every single-pair zone): the Cholesky solve below
-      // on the 1 x 1 matrix c is l = sqrt(c), f = (1 / l) / l, written out
-      // with the same operations so that K keeps its last bits.
+      // One pair in mesh (every single-pair zone): K = 1 / c, correctly
+      // rounded. (The Cholesky solve below gives (1 / sqrt(c)) / sqrt(c),
+      // within an ulp of it, through a square root and a second dependent
+      // division.)
       PairState& p = st.pairs[0];
       const double c = p.local() + p.body;
       if (c > 0) {
-        const double l = std::sqrt(c);
-        const double K = (1.0 / l) / l;
+        const double K = 1.0 / c;
         if (K > 0 && std::isfinite(K)) {
           st.stiffness = K;
           p.load_share = 1.0;
@@ -827,12 +905,19 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
   scratch.pairs.reserve(static_cast<std::size_t>(im.slots) + 1);
   const bool keep_pairs = detail == CurveDetail::kFull || im.relief;
   out.samples.reserve(probes.size());
+  // The same hints in both details, so that they keep the same values.
+  LoadShareHint sweep;
   for (const Probe& pr : probes) {
     if (keep_pairs) {
-      out.samples.push_back(im.state(pr.X, pr.side, parts));
+      out.samples.push_back(im.state(pr.X, pr.side, parts, &sweep));
     } else {
-      im.state_into(scratch, pr.X, pr.side, parts);
-      out.samples.push_back(MeshState{scratch.travel, scratch.stiffness, scratch.approach, scratch.local_stiffness, {}});
+      // Computed in the sample itself with the scratch's pairs lent to it
+      // and taken back: copying the sample's values out of the scratch
+      // stalled on loads of what the solve had just stored.
+      MeshState& sample = out.samples.emplace_back();
+      sample.pairs.swap(scratch.pairs);
+      im.state_into(sample, pr.X, pr.side, parts, &sweep);
+      sample.pairs.swap(scratch.pairs);
     }
   }
 
@@ -951,8 +1036,9 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
   out.travel_at_min = out.samples[i_min].travel;
   out.k_max = out.samples[i_max].stiffness;
   out.travel_at_max = out.samples[i_max].travel;
+  LoadShareHint refine;
   auto k_at = [&](double X) {
-    im.state_into(scratch, X, 0, parts);
+    im.state_into(scratch, X, 0, parts, &refine);
     return scratch.stiffness;
   };
   const double x_tol = 1e-7 * im.pitch;

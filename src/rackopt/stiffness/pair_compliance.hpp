@@ -66,6 +66,21 @@ struct ContactLaw {
     if (!(c > 0)) strip_too_wide(force);
     return c;
   }
+  // at(force) from the term at a nearby force it was evaluated at, without
+  // the logarithm: c(f) = c(f0) - slope ln(1 + u), u = f/f0 - 1, by the
+  // series to u^6 (error below u^7/7 < 2e-22 for |u| <= 1e-3, far below
+  // the rounding of the logarithm itself). Falls back on at() farther away,
+  // at the floor or where the term would not stay positive. The two-pair
+  // Newton's steps after its first are this small: they cost no logarithm.
+  double at_near(double force, double known_force, double known_term) const {
+    const double u = (force - known_force) / known_force;
+    if (known_force > floor && force > floor && std::abs(u) <= 1e-3) {
+      const double ln1p = u * (1.0 - u * (0.5 - u * (1.0 / 3 - u * (0.25 - u * (0.2 - u * (1.0 / 6))))));
+      const double c = known_term - slope * ln1p;
+      if (c > 0) return c;
+    }
+    return at(force);
+  }
   // -dc/d ln f at `force` (0 below the floor).
   double slope_at(double force) const { return force > floor ? slope : 0.0; }
   [[noreturn]] static void strip_too_wide(double force);

@@ -13,6 +13,7 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/stiffness/cantilever_energy.hpp"
+#include "rackopt/stiffness/cumulative_integrals.hpp"
 
 namespace rackopt {
 namespace {
@@ -22,6 +23,15 @@ std::string mm(double metres) {
   std::snprintf(buf, sizeof buf, "%.4g mm", metres * 1e3);
   return buf;
 }
+
+// The involute integrals are tabulated (cumulative_integrals.hpp) at the
+// default quadrature order and above: the table is more accurate than the
+// 16-point rule (docs/accuracy.md). Lower orders integrate each contact with
+// their rule, so that the quadrature error can still be studied.
+constexpr int kTabulatedFromOrder = 16;
+// Panels shrinking towards the tip, where H (the half-thickness) is smallest.
+constexpr int kInvolutePanels = 8;
+constexpr double kInvolutePanelRatio = 1.5;
 
 void require_positive(double value, const char* key, const char* what) {
   if (!(value > 0.0) || !std::isfinite(value)) {
@@ -45,6 +55,9 @@ struct PinionToothCompliance::Impl {
   double E = 0, nu = 0, G = 0, b = 0, inv_Eb = 0, shear_coef = 0;
   bool enabled = true, adaptive = false;
   GaussLegendreRule rule{16};
+  // The involute integrals of a tooth without a spall from any contact to
+  // the root (empty when the rule or QAGS integrates each contact anew).
+  CumulativeIntegrals involute_integrals;
 
   Impl(int order) : rule(order) {}
 
@@ -57,6 +70,35 @@ struct PinionToothCompliance::Impl {
     return alpha2 - std::sqrt(std::max(q * q - 1.0, 0.0));
   }
   double half_thickness(double r) const { return r >= rb ? rb * involute_H(alpha_at_radius(r)) : h1; }
+
+  // The densities below without a spall are sums of four functions of alpha
+  // times powers of the load angle's cosine and sine:
+  //   bending = 1.5/(E b) (F_0 + 2 c1 F_1 + c1^2 F_2),  F_i = L^i g / H^3,  L = tau sin(alpha) - cos(alpha),
+  //   shear = 1.2 (1 + nu)/(E b) c1^2 J,  axial = 0.5/(E b) s1^2 J,  J = g / H.
+  // Their integrals from the contact to the root are tabulated per tooth.
+  CumulativeIntegrals::Values separable_densities(double alpha) const {
+    const double tau = alpha2 - alpha, sa = std::sin(alpha), ca = std::cos(alpha);
+    const double g = tau * ca, H = sa + g, L = tau * sa - ca;
+    const double F0 = g / (H * H * H);
+    return {F0, L * F0, L * L * F0, g / H};
+  }
+
+  // The involute part without a spall from alpha = lo to hi: tabulated when
+  // there is a table, else by the rule (or QAGS).
+  ToothCompliance plain_involute(double lo, double hi, double c1, double s1) const {
+    if (involute_integrals.empty()) return involute_piece(lo, hi, c1, s1, 0.0, 0.0);
+    if (!(hi > lo)) return {};
+    CumulativeIntegrals::Values I = involute_integrals.from(lo);
+    if (hi < alpha_u) {
+      const CumulativeIntegrals::Values beyond = involute_integrals.from(hi);
+      for (std::size_t k = 0; k < I.size(); ++k) I[k] -= beyond[k];
+    }
+    ToothCompliance total;
+    total.bending = 1.5 * (I[0] + c1 * (2.0 * I[1] + c1 * I[2])) * inv_Eb;
+    total.shear = shear_coef * c1 * c1 * I[3] * inv_Eb;
+    total.axial = 0.5 * s1 * s1 * I[3] * inv_Eb;
+    return total;
+  }
 
   // Compliance densities per unit alpha of the involute part (docs/models/tooth.md),
   // with a pit of width ws / depth hs when both are positive (9.1-9.2).
@@ -209,6 +251,15 @@ PinionToothCompliance::PinionToothCompliance(const MeshGeometry& geometry,
     m.segment_ratio = m.cos_a2 - m.rho_cos_a3;
     m.segment = effects.root_segment && m.rf < m.rb;
   }
+  if (m.enabled && !m.adaptive && numerics.quadrature_order >= kTabulatedFromOrder) {
+    // From the highest contact at() accepts (the tip and its tolerance) to the root.
+    const double t_max = std::sqrt(std::max(std::pow(m.ra * (1.0 + 1e-9) / m.rb, 2) - 1.0, 0.0));
+    const double alpha_tip = std::min(m.alpha2 - t_max, m.alpha_u);
+    if (alpha_tip < m.alpha_u) {
+      m.involute_integrals = CumulativeIntegrals([&](double alpha) { return m.separable_densities(alpha); },
+                                                 alpha_tip, m.alpha_u, kInvolutePanels, kInvolutePanelRatio);
+    }
+  }
   impl_ = std::move(impl);
 }
 
@@ -257,21 +308,21 @@ ToothCompliance PinionToothCompliance::at(double s, const SpallBand* spall) cons
   const bool pitted = spall && spall->width > 0.0 && spall->depth > 0.0;
   ToothCompliance total;
   if (!pitted) {
-    total = m.involute_piece(lo, hi, c1, s1, 0.0, 0.0);
+    total = m.plain_involute(lo, hi, c1, s1);
   } else {
     // Band in alpha: the upper edge has the smaller alpha. Split so each piece
     // has a smooth integrand; only the part between contact and root counts.
     const double band_lo = std::max(m.alpha_at_radius(std::max(spall->high, m.rb)), lo);
     const double band_hi = std::min(m.alpha_at_radius(std::max(spall->low, m.rb)), hi);
     if (band_hi > band_lo) {
-      const ToothCompliance p1 = m.involute_piece(lo, band_lo, c1, s1, 0.0, 0.0);
+      const ToothCompliance p1 = m.plain_involute(lo, band_lo, c1, s1);
       const ToothCompliance p2 = m.involute_piece(band_lo, band_hi, c1, s1, spall->width, spall->depth);
-      const ToothCompliance p3 = m.involute_piece(band_hi, hi, c1, s1, 0.0, 0.0);
+      const ToothCompliance p3 = m.plain_involute(band_hi, hi, c1, s1);
       total.bending = p1.bending + p2.bending + p3.bending;
       total.shear = p1.shear + p2.shear + p3.shear;
       total.axial = p1.axial + p2.axial + p3.axial;
     } else {
-      total = m.involute_piece(lo, hi, c1, s1, 0.0, 0.0);
+      total = m.plain_involute(lo, hi, c1, s1);
     }
   }
 
