@@ -32,6 +32,28 @@ RandomInput relative_normal(const std::string& key, double cv) {
   return in;
 }
 
+// Without a life table the direction of life(input) takes two model lives.
+// At the first R's two candidate quantiles one of them is that life at R:
+// two lives for the exact map, and the same life at R as when the direction
+// comes from the quartiles (R = 0.5 first: its candidates are too close to
+// tell a direction) and the life at 0.9 is a life of its own.
+TEST(ExactOnly, TheDirectionProbesServeTheFirstLifeAtR) {
+  Drive d = test::ship_lift_fixed_profile();  // one input: the contact ratio
+  d.reliability.reliabilities = {0.9};
+  d.reliability.times.clear();
+  const WearReliabilityResult at_candidates = run_wear_reliability(d, exact_path_options(true));
+  d.reliability.reliabilities = {0.5, 0.9};
+  const WearReliabilityResult at_quartiles = run_wear_reliability(d, exact_path_options(true));
+  ASSERT_TRUE(at_candidates.exact.available && at_quartiles.exact.available);
+  EXPECT_EQ(at_candidates.exact.model_evaluations, 2);
+  EXPECT_EQ(at_quartiles.exact.model_evaluations, 4);
+  EXPECT_EQ(at_candidates.exact.life_increases, at_quartiles.exact.life_increases);
+  ASSERT_EQ(at_candidates.exact.life_at_R_years.size(), 1u);
+  ASSERT_EQ(at_quartiles.exact.life_at_R_years.size(), 2u);
+  EXPECT_EQ(at_candidates.exact.life_at_R_years[0], at_quartiles.exact.life_at_R_years[1]);
+  EXPECT_GT(at_candidates.exact.life_at_R_years[0], 0.0);
+}
+
 TEST(ExactOnly, SkipsTheSamplesAndKeepsTheExactResults) {
   Drive d = test::ship_lift_fixed_profile();  // one input: the contact ratio
   d.reliability.reliabilities = {0.9, 0.5};

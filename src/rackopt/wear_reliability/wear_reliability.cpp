@@ -394,12 +394,30 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     } else if (qb - qa > 1e-12) {
       bool increasing = true;
       ex.monotone_verified = table && table->monotone(&increasing);
+      auto inside = [&](double q) { return std::clamp(q, qa + 1e-12, qb - 1e-12); };
+      std::vector<std::pair<double, double>> probed;  // (quantile, life) already computed
       if (ex.monotone_verified) {
         ex.life_increases = increasing;
       } else {
-        const double l1 = life_at_q(qa + 0.25 * (qb - qa)), l2 = life_at_q(qa + 0.75 * (qb - qa));
+        // The direction from two lives. The first R's two candidate
+        // quantiles (where its life at R lies if the life rises, and if it
+        // falls) decide it when both lie inside [qa, qb] and at least as far
+        // apart as the quartiles (R >= 0.75 or so): one of the two lives is
+        // then that life at R, one model life fewer than probing elsewhere.
+        // Otherwise the quartiles of [qa, qb].
+        double ql = qa + 0.25 * (qb - qa), qh = qa + 0.75 * (qb - qa);
+        if (!spec.reliabilities.empty()) {
+          const double R0 = spec.reliabilities.front();
+          const double q_rise = qb - R0 * valid_probability, q_fall = qa + R0 * valid_probability;
+          if (q_rise >= qa && q_fall <= qb && inside(q_fall) - inside(q_rise) >= 0.5 * (qb - qa)) {
+            ql = inside(q_rise);
+            qh = inside(q_fall);
+          }
+        }
+        const double l1 = life_at_q(ql), l2 = life_at_q(qh);
         ex.model_evaluations += 2;
         ex.life_increases = l2 >= l1;
+        probed = {{ql, l1}, {qh, l2}};
       }
       // life at R: P(life > t_R | valid) = R, one model life at the
       // quantile. An R above the probability of starting inside the bounds
@@ -408,8 +426,14 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
         const double q = ex.life_increases ? qb - R * valid_probability : qa + R * valid_probability;
         if (q < qa || q > qb) {
           ex.life_at_R_years.push_back(0.0);
+          continue;
+        }
+        const double qc = inside(q);
+        const auto known = std::find_if(probed.begin(), probed.end(), [&](const auto& p) { return p.first == qc; });
+        if (known != probed.end()) {
+          ex.life_at_R_years.push_back(known->second);
         } else {
-          ex.life_at_R_years.push_back(life_at_q(std::clamp(q, qa + 1e-12, qb - 1e-12)));
+          ex.life_at_R_years.push_back(life_at_q(qc));
           ++ex.model_evaluations;
         }
       }
