@@ -369,6 +369,32 @@ TEST(StudyOptimize, GacoSearchesDiscreteVariablesAsIntegersInOneRun) {
   }
 }
 
+TEST(StudyOptimize, IntegerSearchOverMoreCombinationsThanCouldBeListed) {
+  // 120^5 = 2.5e10 combinations of five lists: one GACO run, and nothing
+  // may be sized by the combination count (a status per combination would
+  // take hundreds of gigabytes).
+  auto values = [](double lo, double hi) {
+    std::vector<double> v;
+    for (int k = 0; k < 120; ++k) v.push_back(lo + (hi - lo) * k / 119.0);
+    return v;
+  };
+  StudySpec s = railway_spec(StudyKind::kOptimize);
+  s.variables = {discrete("pinion.pressure_angle", values(14 * kDeg, 22 * kDeg)), discrete("rack.span", values(1.0, 3.0)),
+                 discrete("pinion.face_width", values(0.1, 0.2)), discrete("mounting.clearance", values(0.0, 0.004)),
+                 discrete("pinion.module", values(0.025, 0.04))};
+  s.objectives = {objective("stiffness_fluctuation")};
+  s.constraints = {constraint("contact_ratio", 1.3)};
+  s.solver.library = "pagmo";
+  s.solver.algorithm = "gaco";
+  s.solver.max_evaluations = 64;
+  ASSERT_TRUE(searches_discrete_as_integers(s));
+  const StudyResult r = run_study(s, options_in(scratch_path("gaco_many")));
+  ASSERT_TRUE(r.best) << r.status;
+  EXPECT_LE(r.evaluations, 65u);
+  EXPECT_LE(r.per_combination.size(), 65u);  // the combinations reached, not all of them
+  EXPECT_FALSE(r.per_combination.empty());
+}
+
 TEST(StudyOptimize, SetupErrorsAreInputErrors) {
   const std::string dir = scratch_path("setup");
   StudySpec s = sizing_spec(StudyKind::kOptimize);

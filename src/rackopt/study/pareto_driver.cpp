@@ -45,9 +45,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   // One run per combination (the runs in lockstep: each round's designs of
   // every combination go to the executor as one batch), or one run over
   // them all when the algorithm searches the discrete variables as integers.
-  const bool integers = searches_discrete_as_integers(spec);
-  auto phase_of = [&](const StudyProblem& p) { return integers ? std::string() : combination_phase(p); };
-  CombinationRuns runs(ledger, base, solver_views(base), phase_of);
+  CombinationRuns runs(ledger, base, solver_views(base), combination_phase);
   std::vector<std::optional<solvers::ParetoResult>> run_results(runs.size());
   std::vector<char> ran(runs.size(), 0);
   const std::size_t before = result.evaluations;
@@ -57,7 +55,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       ran[c] = 1;
       const StudyProblem& p = runs.view(c);
       const RecordedProblem& rp = runs.recorded(c);
-      const std::string phase = phase_of(p);
+      const std::string phase = combination_phase(p);
       ledger.set_phase(phase.empty() ? "pareto" : phase);
       if (p.dimension() == 0) {
         problem.evaluate_batch({std::vector<double>{}});
@@ -80,7 +78,7 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
   for (std::size_t c = 0; c < runs.size(); ++c) {
     if (!ran[c]) break;  // stopped before it
     const StudyProblem& p = runs.view(c);
-    const std::string phase = phase_of(p);
+    const std::string phase = combination_phase(p);
     if (p.dimension() == 0) {
       const std::vector<double> x = p.to_design({});
       const std::optional<DesignEvaluation> o = ledger.recorded(x);

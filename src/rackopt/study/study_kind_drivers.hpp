@@ -33,7 +33,8 @@ inline InputError study_error(const StudySpec& spec, const std::string& key, con
   return InputError(SourceMark{spec.file, 0, 0}, key, message);
 }
 
-// "combination 2/6 (pinion.module=4 mm)", or "" with a single combination.
+// "combination 2/6 (pinion.module=4 mm)", or "" with a single combination
+// or for the view that searches every combination as integers.
 std::string combination_phase(const StudyProblem& p);
 
 // evaluate and reliability: the start design is the result (and, for
