@@ -13,6 +13,7 @@
 
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/study/design_wire.hpp"
+#include "rackopt/study/reliability_options.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 
 namespace rackopt::mpi {

@@ -218,6 +218,12 @@ pagmo::algorithm make_algorithm(const SolverBackend& backend, const SolverSettin
   throw std::logic_error("unknown pagmo method");
 }
 
+// A point's whole-valued variables rounded to the nearest whole value (the
+// bounds are whole, so it stays in the box).
+void round_integer_part(std::vector<double>& x, std::size_t integers) {
+  for (std::size_t i = x.size() - std::min(integers, x.size()); i < x.size(); ++i) x[i] = std::round(x[i]);
+}
+
 // One population run on a tracker: x0 and a Latin hypercube of the box as
 // the first generation, then whole generations while the budget allows one.
 // `on_generation(g)` is told before generation g is evaluated (0 = the first
@@ -242,12 +248,11 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
   std::vector<std::vector<double>> first{tracker.x0()};
   if (population > 1) {
     auto lhs = doe::latin_hypercube(tracker.lower(), tracker.upper(), population - 1, settings.seed);
+    // Whole-valued variables start whole: the hypercube's strata of an
+    // index rounded to the nearest entry (x0 is rounded by minimize and front).
+    for (auto& x : lhs) round_integer_part(x, integers);
     first.insert(first.end(), lhs.begin(), lhs.end());
   }
-  // Whole-valued variables start whole: the hypercube's strata of an index
-  // rounded to the nearest entry (x0's are whole already, see whole_x0).
-  for (auto& x : first)
-    for (std::size_t i = x.size() - integers; i < x.size(); ++i) x[i] = std::round(x[i]);
   // guard: a halt (budget, time, stop request) ends the run with every
   // evaluation kept by the tracker; anything else is rethrown by the caller.
   tracker.guard([&] {
@@ -276,12 +281,6 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
     }
   });
   return end;
-}
-
-// x0's whole-valued variables rounded to the nearest whole value (the
-// bounds are whole, so it stays in the box).
-void whole_x0(std::vector<double>& x0, std::size_t integers) {
-  for (std::size_t i = x0.size() - std::min(integers, x0.size()); i < x0.size(); ++i) x0[i] = std::round(x0[i]);
 }
 
 class PagmoBackend final : public SolverBackend {
@@ -366,7 +365,7 @@ class PagmoBackend final : public SolverBackend {
     const std::vector<double> lo = problem.lower_bounds(), up = problem.upper_bounds();
     std::vector<double> x0c(x0.begin(), x0.end());
     for (std::size_t i = 0; i < x0c.size(); ++i) x0c[i] = std::clamp(x0c[i], lo[i], up[i]);
-    whole_x0(x0c, problem.num_integer());
+    round_integer_part(x0c, problem.num_integer());
     EvaluationTracker tracker(problem, settings, callbacks, x0c);
     const std::size_t pop = population_size(*this, settings, m, problem.dimension(), 0);
     const RunEnd end = evolve(tracker, settings, m, 1, problem.num_integer(), pop, [](std::size_t) {});
@@ -397,7 +396,7 @@ class PagmoBackend final : public SolverBackend {
     const std::vector<double> lo = problem.lower_bounds(), up = problem.upper_bounds();
     std::vector<double> x0c(x0.begin(), x0.end());
     for (std::size_t i = 0; i < x0c.size(); ++i) x0c[i] = std::clamp(x0c[i], lo[i], up[i]);
-    whole_x0(x0c, problem.num_integer());
+    round_integer_part(x0c, problem.num_integer());
 
     std::string label;
     std::vector<ParetoPoint> archive;  // every feasible evaluation, in evaluation order

@@ -43,12 +43,6 @@ class DesignExecutor {
   virtual std::string describe() const = 0;
 };
 
-// The wear reliability options of a reliability study's design: the
-// problem's (wear_reliability_options), with the study's sample count, seed
-// and bootstrap replicates, on `threads` threads. What every process of an
-// MPI job sets up alike.
-WearReliabilityOptions study_reliability_options(const StudySpec& spec, const Drive& design, unsigned threads);
-
 // Threads of this process (resolve_threads: 0 = every core). One design,
 // or one thread, runs on the calling thread.
 std::unique_ptr<DesignExecutor> make_thread_executor(unsigned threads);

@@ -1,5 +1,6 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
+#include "rackopt/study/reliability_options.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 
 namespace rackopt::study {

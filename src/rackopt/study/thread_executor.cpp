@@ -32,20 +32,6 @@ class ThreadExecutor final : public DesignExecutor {
 
 }  // namespace
 
-decltype(WearReliabilityOptions::sample_executor) DesignExecutor::reliability_samples(const StudyProblem&,
-                                                                                   std::span<const double>) {
-  return {};
-}
-
-WearReliabilityOptions study_reliability_options(const StudySpec& spec, const Drive& design, unsigned threads) {
-  WearReliabilityOptions wo = wear_reliability_options(design);
-  if (spec.metric_options.reliability_samples) wo.samples = *spec.metric_options.reliability_samples;
-  if (spec.metric_options.reliability_seed) wo.seed = *spec.metric_options.reliability_seed;
-  if (spec.metric_options.bootstrap_replicates) wo.bootstrap_replicates = *spec.metric_options.bootstrap_replicates;
-  wo.threads = threads;
-  return wo;
-}
-
 std::unique_ptr<DesignExecutor> make_thread_executor(unsigned threads) {
   return std::make_unique<ThreadExecutor>(threads);
 }
