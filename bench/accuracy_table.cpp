@@ -10,6 +10,9 @@
 //                                                  the cases are chosen for that drive, ~1-2 min)
 //   ./build/accuracy_table study                   optimizers on studies/rack_railway_sizing.yaml
 //                                                  (quality vs budget, forward vs central FD; ~2-3 min)
+//   ./build/accuracy_table metric_sampling         the metrics' positions per period
+//                                                  (metric_options.positions_per_period) on the
+//                                                  sizing study's designs and its optimum (~1 min)
 //
 // Stiffness knobs:
 //  * numerics.quadrature_order: fixed Gauss-Legendre points per tooth integral,
@@ -538,6 +541,119 @@ void study_tables() {
   std::printf("\n");
 }
 
+// The sizing study's metrics at its designs with the metrics' curve sampled
+// at P positions per period, against P = 800; and the shipped optimizer's
+// result at each P (its optimum's fluctuation re-evaluated at P = 800).
+void metric_sampling_tables() {
+  using rackopt::study::StudyProblem;
+  constexpr int kReference = 800;
+  const std::vector<int> sampling = {8, 12, 16, 24, 32, 50, 100, 200};
+  auto spec_at = [](int positions) {
+    rackopt::study::StudySpec s = sizing_spec(false);
+    s.metric_options.positions_per_period = positions;
+    // The fluctuation's parts, each on its own.
+    s.report_metrics.push_back(rackopt::metrics::parse_metric_request("max_stiffness"));
+    return s;
+  };
+  // Designs spread over the box of every module value (R_d sequence, as
+  // bench/study_bench.cpp's Points).
+  const StudyProblem ref_base(spec_at(kReference));
+  const std::size_t dim = ref_base.dimension();
+  double phi = 2;
+  for (int k = 0; k < 50; ++k) phi = std::pow(1 + phi, 1.0 / static_cast<double>(dim + 1));
+  std::vector<std::pair<std::size_t, std::vector<double>>> designs;  // (combination, SI design)
+  std::vector<double> u(dim, 0.5);
+  for (int i = 0; i < 60; ++i) {
+    for (std::size_t j = 0; j < dim; ++j)
+      u[j] = std::fmod(u[j] + std::fmod(std::pow(1 / phi, static_cast<double>(j + 1)), 1.0), 1.0);
+    const std::size_t c = static_cast<std::size_t>(i) % ref_base.num_combinations();
+    designs.emplace_back(c, ref_base.for_combination(c).to_design(u));
+  }
+  const auto& labels = ref_base.metric_labels();
+  std::vector<rackopt::study::DesignEvaluation> ref;
+  for (const auto& [c, x] : designs) ref.push_back(ref_base.for_combination(c).evaluate_design(x));
+
+  std::printf("Metrics of %zu designs of studies/rack_railway_sizing.yaml (spread over its box, every module "
+              "value) with the metrics' curve at P positions per period, against P = %d: the largest relative "
+              "error over the designs the reference computes; ms per design (every metric of the study, one "
+              "thread, median of 3 passes):\n\n",
+              designs.size(), kReference);
+  std::printf("| P |");
+  std::vector<std::size_t> shown;
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    shown.push_back(k);
+    std::printf(" %s |", labels[k].c_str());
+  }
+  std::printf(" ms per design |\n|---|");
+  for (std::size_t k = 0; k < shown.size(); ++k) std::printf("---|");
+  std::printf("---|\n");
+  for (const int P : sampling) {
+    const StudyProblem base(spec_at(P));
+    std::vector<StudyProblem> views;
+    for (std::size_t c = 0; c < base.num_combinations(); ++c) views.push_back(base.for_combination(c));
+    std::vector<double> worst(labels.size(), 0.0);
+    std::vector<double> passes;
+    for (int pass = 0; pass < 3; ++pass) {
+      const auto t0 = std::chrono::steady_clock::now();
+      for (std::size_t i = 0; i < designs.size(); ++i) {
+        const auto e = views[designs[i].first].evaluate_design(designs[i].second);
+        for (std::size_t k = 0; k < labels.size(); ++k) {
+          if (!ref[i].metric_ok[k]) continue;
+          if (!e.metric_ok[k]) {
+            worst[k] = INFINITY;
+            continue;
+          }
+          const double r = ref[i].metric_values[k];
+          worst[k] = std::max(worst[k], std::abs(e.metric_values[k] - r) / std::max(std::abs(r), 1e-300));
+        }
+      }
+      passes.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+                       static_cast<double>(designs.size()));
+    }
+    std::sort(passes.begin(), passes.end());
+    std::printf("| %d |", P);
+    for (std::size_t k : shown) std::printf(" %.1e |", worst[k]);
+    std::printf(" %.3f |\n", passes[1]);
+    std::fflush(stdout);
+  }
+
+  std::printf("\nThe shipped optimizer (COBYLA, 3 starts, the file's budget) with the metrics at P positions per "
+              "period; its optimum's fluctuation again at P = %d:\n\n", kReference);
+  std::printf("| P | optimum (angle, module, span, clearance) | fluctuation at P | at P = %d | evaluations | s |\n",
+              kReference);
+  std::printf("|---|---|---|---|---|---|\n");
+  for (const int P : {12, 24, 50, 100}) {
+    const rackopt::study::StudySpec spec = spec_at(P);
+    StudyProblem base(spec);
+    const auto t0 = std::chrono::steady_clock::now();
+    base.set_objective_scales_from(base.evaluate_design(base.start_design()));
+    std::size_t evaluations = 1;
+    double best = INFINITY;
+    std::vector<double> best_x;
+    std::size_t best_c = 0;
+    for (std::size_t c = 0; c < base.num_combinations(); ++c) {
+      StudyProblem q = base.for_combination(c);
+      const rackopt::solvers::SolverResult r = rackopt::solvers::minimize(q, q.start_unit(), spec.solver);
+      evaluations += r.evaluations;
+      if (!r.feasible) continue;
+      const std::vector<double> x = q.to_design(r.x);
+      const double f = exact_fluctuation(q, q.evaluate_design(x));
+      if (f < best) {
+        best = f;
+        best_x = x;
+        best_c = c;
+      }
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double at_ref = best_x.empty() ? INFINITY
+                                         : exact_fluctuation(ref_base, ref_base.for_combination(best_c).evaluate_design(best_x));
+    std::printf("| %d | %s | %.6f | %.6f | %zu | %.2f |\n", P, design_text(best_x).c_str(), best, at_ref, evaluations,
+                seconds);
+    std::fflush(stdout);
+  }
+  std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -553,6 +669,15 @@ int main(int argc, char** argv) {
     }
     try {
       study_tables();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
+  if (!args.empty() && args[0] == "metric_sampling") {
+    try {
+      metric_sampling_tables();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "accuracy_table: %s\n", e.what());
       return 1;

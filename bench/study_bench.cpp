@@ -39,15 +39,14 @@ std::filesystem::path bench_root() {
   return std::filesystem::temp_directory_path() / ("rackopt_study_bench_" + std::to_string(::getpid()));
 }
 
-// The sizing spec. positions_per_period 0 keeps the file's (100).
+// The sizing spec. positions_per_period > 0 sets the metrics' travel
+// sampling (metric_options.positions_per_period); 0 keeps the file's.
 // stiffness_only drops the stress metrics (contact_safety,
 // root_bending_safety, contact_stress): what is left is one stiffness curve
 // plus the geometry (contact_ratio) and supports_per_metre.
 st::StudySpec sizing_spec(int positions_per_period, bool stiffness_only) {
-  std::vector<std::string> overrides;
-  if (positions_per_period > 0)
-    overrides.push_back("problem.numerics.positions_per_period=" + std::to_string(positions_per_period));
-  st::StudySpec s = rackopt::studyfile::load_study_file(kStudies + "rack_railway_sizing.yaml", overrides);
+  st::StudySpec s = rackopt::studyfile::load_study_file(kStudies + "rack_railway_sizing.yaml");
+  if (positions_per_period > 0) s.metric_options.positions_per_period = positions_per_period;
   if (stiffness_only) {
     auto stress = [](const std::string& label) { return label.find("safety") != std::string::npos ||
                                                         label.find("stress") != std::string::npos; };
@@ -86,7 +85,7 @@ void rate_counters(benchmark::State& state, std::size_t failed) {
 // StudyProblem::evaluate at distinct designs, the three module values in
 // turn: design -> problem tree copy with the values set -> Drive (loader
 // checks) -> metrics -> objective/constraint mapping.
-// Args: positions per period (0 = file's 100), stiffness_only (0/1).
+// Args: the metrics' positions per period (0 = the file's), stiffness_only (0/1).
 void BM_SizingEvaluate(benchmark::State& state) {
   const st::StudyProblem base(sizing_spec(static_cast<int>(state.range(0)), state.range(1) != 0));
   std::vector<st::StudyProblem> views;
@@ -106,6 +105,8 @@ BENCHMARK(BM_SizingEvaluate)
     ->Args({0, 1})
     ->Args({24, 0})
     ->Args({24, 1})
+    ->Args({100, 0})
+    ->Args({100, 1})
     ->Unit(benchmark::kMillisecond);
 
 // The parts of one evaluation, at the same designs (as shipped, file's

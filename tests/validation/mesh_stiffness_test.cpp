@@ -10,7 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -120,6 +124,45 @@ TEST(MeshStiffnessCurve, ExtremaAndMeanIndependentOfSampling) {
       EXPECT_NEAR(c.k_mean / curves[1].k_mean, 1.0, 2e-6);
     }
   }
+}
+
+// Right after a second pair enters, the stiffness of this rack railway
+// design rises for about 1.3 mm of travel (a tenth of a sample step at 8 to
+// 32 positions per period) and then falls: the largest sample is the piece's
+// first limit, with no sampled local maximum around the peak. The extremes
+// must still be the curve's own, found by refinement, at any sampling.
+TEST(MeshStiffnessCurve, ExtremeInsideTheFirstStepOfAPieceIsFoundAtAnySampling) {
+  const std::vector<std::string> design = {"pinion.pressure_angle=0.39481062 rad", "pinion.module=36 mm",
+                                           "rack.span=2.26544833 m", "mounting.clearance=0.174840144 mm"};
+  const MeshStiffnessModel model(test::problem("rack_railway.yaml", design));
+  const StiffnessCurve fine = model.curve(CurveDetail::kSummary, 800);
+  for (int n : {8, 16, 24, 32, 37, 100}) {
+    SCOPED_TRACE(n);
+    const StiffnessCurve c = model.curve(CurveDetail::kSummary, n);
+    EXPECT_NEAR(c.k_max / fine.k_max, 1.0, 1e-12);
+    EXPECT_NEAR(c.k_min / fine.k_min, 1.0, 1e-12);
+    // The peak is not at a sample of the coarse curve.
+    EXPECT_NEAR(c.travel_at_max, fine.travel_at_max, 1e-6);
+  }
+  // ... and it does lie strictly inside, after a breakpoint.
+  const auto after = std::upper_bound(fine.breakpoints.begin(), fine.breakpoints.end(), fine.travel_at_max);
+  ASSERT_NE(after, fine.breakpoints.begin());
+  EXPECT_GT(fine.travel_at_max - *std::prev(after), 1e-4);
+  EXPECT_GT(fine.k_max, model.stiffness(*std::prev(after), +1) * (1 + 1e-4));
+}
+
+// A metric's coarser sampling (positions_per_period of curve()) outside the
+// problem key's range is refused; 0 keeps the drive's own.
+TEST(MeshStiffnessCurve, SamplingOverrideRangeAndDefault) {
+  const MeshStiffnessModel model(test::problem("ship_lift.yaml"));
+  EXPECT_THROW(model.curve(CurveDetail::kSummary, 3), std::invalid_argument);
+  EXPECT_THROW(model.curve(CurveDetail::kSummary, 10001), std::invalid_argument);
+  EXPECT_THROW(model.curve(CurveDetail::kSummary, -1), std::invalid_argument);
+  const StiffnessCurve own = model.curve(CurveDetail::kSummary);
+  const StiffnessCurve same = model.curve(CurveDetail::kSummary, model.drive().numerics.positions_per_period);
+  ASSERT_EQ(own.samples.size(), same.samples.size());
+  EXPECT_EQ(own.k_mean, same.k_mean);
+  EXPECT_LT(model.curve(CurveDetail::kSummary, 24).samples.size(), own.samples.size());
 }
 
 // With a rigid rack body the mean over one mesh period does not depend on the

@@ -135,6 +135,9 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   nonneg(o.load_factors.transverse_bending, "load_factors.transverse_bending");
   nonneg(o.load_factors.face_contact, "load_factors.face_contact");
   nonneg(o.load_factors.transverse_contact, "load_factors.transverse_contact");
+  if (o.positions_per_period && (*o.positions_per_period < 4 || *o.positions_per_period > 10000))
+    missing("positions_per_period", "must be a whole number in 4 ... 10000 (absent: the problem's "
+                                    "numerics.positions_per_period)");
   // The problem key a member's allowable comes from. A drive built in code
   // may have unnamed materials.
   auto key_of = [](const Material& m, const char* which) {
@@ -224,7 +227,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
                                                              : MeshStiffnessModel(drive);
       // The metrics read each sample's own values and the curve's summary,
       // never its pairs: the summary curve skips storing them.
-      m.curve_slot.value = model.curve(CurveDetail::kSummary);
+      m.curve_slot.value = model.curve(CurveDetail::kSummary, o.positions_per_period.value_or(0));
       // Post-processing of the one curve: listed in models_run, not counted as runs.
       m.dynamics_figures = mesh_dynamics_figures(model, *m.curve_slot.value, needed);
       if (m.dynamics_figures.ripple) out.models_run.insert(Model::kMeshRipple);

@@ -71,6 +71,14 @@ struct MetricOptions {
   std::optional<long> reliability_seed;      // >= 0 (common random numbers either way)
   std::optional<int> bootstrap_replicates;   // Monte Carlo path: KS test and fit choice (>= 20)
   unsigned threads = 1;            // Monte Carlo path threads; results do not depend on it
+
+  // Travel samples per mesh period of the stiffness curve the metrics read
+  // (4 ... 10000); absent: the problem's numerics.positions_per_period. The
+  // curve's extremes are refined inside each smooth piece and do not depend
+  // on it; the mean converges as O(h^4), the KS aggregates, the ripple and
+  // the transmission error read the samples themselves (docs/accuracy.md,
+  // "Positions per period for the metrics").
+  std::optional<int> positions_per_period;
 };
 
 // One requested metric's outcome.

@@ -10,6 +10,8 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -846,13 +848,16 @@ std::vector<double> MeshStiffnessModel::breakpoints(double lo, double hi) const 
   return impl_->breakpoints(lo, hi);
 }
 
-StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
+StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail, int positions_per_period) const {
   const Impl& im = *impl_;
   StiffnessCurve out;
   out.warnings = im.warnings;
   out.max_pairs = im.slots;
   const double l = im.span;
-  const int N = im.drive.numerics.positions_per_period;
+  if (positions_per_period != 0 && (positions_per_period < 4 || positions_per_period > 10000))
+    throw std::invalid_argument("curve: positions_per_period must be 0 (the drive's) or 4 ... 10000, got " +
+                                std::to_string(positions_per_period));
+  const int N = positions_per_period > 0 ? positions_per_period : im.drive.numerics.positions_per_period;
   const double dX = im.pitch / N;
   LocalCache cache(static_cast<std::size_t>(4 * N + 64));
   auto parts = [&](double s, int i, int j) -> const LocalParts& { return im.cached_parts(cache, s, i, j); };
@@ -1042,26 +1047,69 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail) const {
     return scratch.stiffness;
   };
   const double x_tol = 1e-7 * im.pitch;
+  auto refine_min = [&](double lo, double hi) {
+    auto [x, k] = golden_min(k_at, lo, hi, x_tol);
+    if (k < out.k_min) {
+      out.k_min = k;
+      out.travel_at_min = x;
+    }
+  };
+  auto refine_max = [&](double lo, double hi) {
+    auto [x, k] = golden_min([&](double X) { return -k_at(X); }, lo, hi, x_tol);
+    if (-k > out.k_max) {
+      out.k_max = -k;
+      out.travel_at_max = x;
+    }
+  };
+  // Candidates are those whose sampled value is close to the current extreme.
+  const auto near_min = [&](double k) { return k <= out.k_min * (1 + 1e-3); };
+  const auto near_max = [&](double k) { return k >= out.k_max * (1 - 1e-3); };
   for (std::size_t i = 1; i + 1 < n; ++i) {
     if (piece[i - 1] != piece[i] || piece[i + 1] != piece[i]) continue;
     const double k0 = out.samples[i - 1].stiffness, k1 = out.samples[i].stiffness,
                  k2 = out.samples[i + 1].stiffness;
     const double lo = out.samples[i - 1].travel, hi = out.samples[i + 1].travel;
-    // Candidates whose sampled value is close to the current extreme.
-    if (k1 <= k0 && k1 <= k2 && k1 <= out.k_min * (1 + 1e-3)) {
-      auto [x, k] = golden_min(k_at, lo, hi, x_tol);
-      if (k < out.k_min) {
-        out.k_min = k;
-        out.travel_at_min = x;
+    if (k1 <= k0 && k1 <= k2 && near_min(k1)) refine_min(lo, hi);
+    if (k1 >= k0 && k1 >= k2 && near_max(k1)) refine_max(lo, hi);
+  }
+  // An extreme between a piece's end and its next sample has no sampled
+  // local extreme around it: right after a second pair enters, the
+  // stiffness may rise for a fraction of a sample step and then fall, so
+  // the end's limit is the largest sample while the peak lies inside. The
+  // parabola through the end and its two neighbours in the piece tells:
+  // its slope at the end pointing into the piece towards larger values
+  // (smaller, for the minimum) while the next sample is not larger means
+  // an interior peak in the first step. A piece of two samples has no such
+  // neighbours; its midpoint tells instead.
+  std::size_t first = 0;
+  while (first < n) {
+    std::size_t last = first;
+    while (last + 1 < n && piece[last + 1] == piece[first]) ++last;
+    if (last == first + 1) {
+      const double x0 = out.samples[first].travel, x1 = out.samples[last].travel;
+      const double k0 = out.samples[first].stiffness, k1 = out.samples[last].stiffness;
+      if (x1 > x0 && (near_min(std::min(k0, k1)) || near_max(std::max(k0, k1)))) {
+        const double km = k_at(0.5 * (x0 + x1));
+        if (km < std::min(k0, k1) && near_min(km)) refine_min(x0, x1);
+        if (km > std::max(k0, k1) && near_max(km)) refine_max(x0, x1);
+      }
+    } else if (last >= first + 2) {
+      for (const bool at_start : {true, false}) {
+        const std::size_t e = at_start ? first : last, a = at_start ? first + 1 : last - 1,
+                          b = at_start ? first + 2 : last - 2;
+        const double xe = out.samples[e].travel, xa = out.samples[a].travel, xb = out.samples[b].travel;
+        const double ke = out.samples[e].stiffness, ka = out.samples[a].stiffness, kb = out.samples[b].stiffness;
+        if (xa == xe || xb == xa) continue;
+        // Slope of the parabola at the end, measured into the piece.
+        const double s_ea = (ka - ke) / (xa - xe), s_ab = (kb - ka) / (xb - xa);
+        const double curvature = (s_ab - s_ea) / (xb - xe);
+        const double slope_in = (s_ea - curvature * (xa - xe)) * (at_start ? 1.0 : -1.0);
+        const double lo = std::min(xe, xa), hi = std::max(xe, xa);
+        if (slope_in > 0 && ka <= ke && near_max(ke)) refine_max(lo, hi);
+        if (slope_in < 0 && ka >= ke && near_min(ke)) refine_min(lo, hi);
       }
     }
-    if (k1 >= k0 && k1 >= k2 && k1 >= out.k_max * (1 - 1e-3)) {
-      auto [x, k] = golden_min([&](double X) { return -k_at(X); }, lo, hi, x_tol);
-      if (-k > out.k_max) {
-        out.k_max = -k;
-        out.travel_at_max = x;
-      }
-    }
+    first = last + 1;
   }
   out.k_fluctuation = out.k_mean > 0 ? (out.k_max - out.k_min) / out.k_mean : 0.0;
   if (detail == CurveDetail::kSummary && im.relief) {

@@ -118,8 +118,11 @@ class MeshStiffnessModel {
   // pieces) and mean (piecewise cubic quadrature) do not depend on where the
   // uniform samples fall. CurveDetail::kSummary leaves every sample's
   // `pairs` empty (k_min, k_max, k_mean, the breakpoints and the samples'
-  // own values are the same).
-  StiffnessCurve curve(CurveDetail detail = CurveDetail::kFull) const;
+  // own values are the same). positions_per_period > 0 samples that many
+  // per period instead of the drive's numerics.positions_per_period (the
+  // metrics of a study may ask for fewer than its plots; accepted range as
+  // the problem key's, 4 ... 10000); 0 keeps the drive's.
+  StiffnessCurve curve(CurveDetail detail = CurveDetail::kFull, int positions_per_period = 0) const;
 
   // Travel positions in [lo, hi] where the number of pairs changes or a
   // contact crosses a support.

@@ -14,6 +14,10 @@ std::vector<std::pair<std::string, std::string>> fidelity_settings(const Drive& 
   out.emplace_back("numerics.quadrature_order", d.numerics.adaptive_quadrature ? "adaptive (GSL QAGS)"
                                                                                 : num(d.numerics.quadrature_order));
   out.emplace_back("numerics.positions_per_period", num(d.numerics.positions_per_period));
+  // The metrics' curve may be sampled more coarsely than the plotted one.
+  if (spec.metric_options.positions_per_period)
+    out.emplace_back("metric_options.positions_per_period", num(*spec.metric_options.positions_per_period) +
+                                                                " (the metrics' curve; the plots use the problem's)");
   if (d.wear.coefficient > 0) {
     out.emplace_back("wear.profile_points", num(d.wear.profile_points));
     out.emplace_back("wear.block_fraction", num(d.wear.block_fraction));

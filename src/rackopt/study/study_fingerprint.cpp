@@ -138,6 +138,12 @@ std::string study_fingerprint(const StudySpec& spec) {
     c.key("cost");
     for (double v : {m.cost.rack_per_kg, m.cost.pinion_per_kg, m.cost.per_support, m.cost.rack_length}) c.num(v);
   }
+  // Only when given, so the fingerprints of studies without it stay what
+  // their records hold.
+  if (m.positions_per_period) {
+    c.key("metric_positions_per_period");
+    c.integer(static_cast<std::uint64_t>(*m.positions_per_period));
+  }
   // threads: results do not depend on it.
 
   auto solver = [&](const solvers::SolverSettings& s) {

@@ -177,7 +177,8 @@ std::vector<MetricSite> read_metric_sections(const SectionReader& top, StudySpec
 SectionReader read_metric_options(const SectionReader& top, StudySpec& spec) {
   const SectionReader mo =
       study_section(top.get("metric_options"), "metric_options", top.key_mark("metric_options"),
-                    {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates", "cost"},
+                    {"exact_quantile", "reliability_samples", "reliability_seed", "bootstrap_replicates", "cost",
+                     "positions_per_period"},
                     "{exact_quantile: on, reliability_samples: 1000}");
   spec.metric_options.exact_quantile = mo.flag("exact_quantile", spec.metric_options.exact_quantile);
   if (const auto samples = mo.integer("reliability_samples", {1, kMaxReliabilitySamples}))
@@ -186,6 +187,8 @@ SectionReader read_metric_options(const SectionReader& top, StudySpec& spec) {
   // unless the study pins the Monte Carlo seed itself.
   spec.metric_options.reliability_seed = static_cast<long>(
       mo.integer("reliability_seed", {0, 2000000000}).value_or(static_cast<long long>(spec.seed % 2000000001ULL)));
+  if (const auto positions = mo.integer("positions_per_period", {4, 10000}))
+    spec.metric_options.positions_per_period = static_cast<int>(*positions);
   if (const auto replicates = mo.integer("bootstrap_replicates", {statistics::kMinBootstrapReplicates, 100000}))
     spec.metric_options.bootstrap_replicates = static_cast<int>(*replicates);
   {
