@@ -85,6 +85,33 @@ TEST(EvaluateMetrics, StiffnessOrderAndKsBounds) {
   EXPECT_NEAR(v.values[6].value, (ksmax - ksmin) / kmean, 1e-12);
 }
 
+// The metrics' own sampling: the curve they read has that many positions
+// per period (the KS aggregates count its samples), the refined extremes
+// stay the curve's, and the mean moves by the coarser quadrature's error
+// only (docs/accuracy.md, "Positions per period for the metrics").
+TEST(EvaluateMetrics, MetricSamplingSetsTheCurvesPositions) {
+  const Drive d = problem("rack_railway");
+  MetricOptions coarse;
+  coarse.positions_per_period = 24;
+  const auto texts = {"min_stiffness", "max_stiffness", "mean_stiffness", "min_stiffness_ks(100)"};
+  const MetricValues own = eval(d, texts);
+  const MetricValues few = eval(d, texts, coarse);
+  ASSERT_TRUE(own.all_ok() && few.all_ok());
+  EXPECT_NEAR(few.values[0].value / own.values[0].value, 1.0, 1e-12);
+  EXPECT_NEAR(few.values[1].value / own.values[1].value, 1.0, 1e-12);
+  EXPECT_NE(few.values[2].value, own.values[2].value);
+  EXPECT_NEAR(few.values[2].value / own.values[2].value, 1.0, 1e-6);
+  const StiffnessCurve curve = MeshStiffnessModel(d).curve(CurveDetail::kSummary, 24);
+  const double n = static_cast<double>(curve.samples.size() + 2);
+  EXPECT_GE(few.values[3].value, few.values[0].value * std::pow(n, -1.0 / 100));
+  EXPECT_GT(few.values[3].value, own.values[3].value);  // fewer samples near the minimum
+  MetricOptions bad;
+  bad.positions_per_period = 3;
+  EXPECT_THROW(eval(d, {"min_stiffness"}, bad), InputError);
+  // Without a curve metric the sampling is never read, yet still checked.
+  EXPECT_THROW(eval(d, {"contact_ratio"}, bad), InputError);
+}
+
 TEST(EvaluateMetrics, KsMinConvergesMonotonicallyFromBelowAsRhoGrows) {
   const Drive d = problem("ship_lift");
   const MetricValues v = eval(d, {"min_stiffness", "min_stiffness_ks(10)", "min_stiffness_ks(100)",

@@ -77,6 +77,7 @@ TEST(StudyFingerprint, EveryDocumentedInputChangesIt) {
       {"reliability seed", [](StudySpec& s) { s.metric_options.reliability_seed = 3; }},
       {"bootstrap", [](StudySpec& s) { s.metric_options.bootstrap_replicates = 50; }},
       {"cost weights", [](StudySpec& s) { s.metric_options.cost.per_support += 1; }},
+      {"metric sampling", [](StudySpec& s) { s.metric_options.positions_per_period = 24; }},
       {"solver algorithm", [](StudySpec& s) { s.solver.algorithm = "LN_BOBYQA"; }},
       {"solver library", [](StudySpec& s) { s.solver.library = "ipopt"; }},
       {"solver xtol_rel", [](StudySpec& s) { s.solver.xtol_rel = 1e-5; }},

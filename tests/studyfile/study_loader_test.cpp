@@ -270,6 +270,17 @@ TEST(StudyLoader, SeedDrivesEveryRandomChoice) {
   expect_error(bad, t(position_of(bad, "-1")), "study.seed", {"whole number >= 0"});
 }
 
+TEST(StudyLoader, MetricSamplingIsTheMetricsOwn) {
+  const std::string head = std::string(kOptimize);
+  EXPECT_FALSE(load(head).metric_options.positions_per_period);
+  const StudySpec s = load(head + "metric_options: {positions_per_period: 24}\n");
+  EXPECT_EQ(s.metric_options.positions_per_period, 24);
+  const std::string few = head + "metric_options: {positions_per_period: 3}\n";
+  expect_error(few, t(position_of(few, "3}")), "metric_options.positions_per_period", {"4", "10000"});
+  const std::string frac = head + "metric_options: {positions_per_period: 24.5}\n";
+  expect_error(frac, t(position_of(frac, "24.5")), "metric_options.positions_per_period", {"whole number"});
+}
+
 // ------------------------------------------------------------------- errors
 
 TEST(StudyLoaderErrors, RequiredKeys) {
