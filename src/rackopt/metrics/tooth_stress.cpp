@@ -30,25 +30,33 @@ struct Derivs {
   ToothPoint p, d1, d2;
 };
 
-// Fillet point and its first two derivatives in phi (central differences; the
-// fillet is an analytic function of phi, see fillet_point). Steps chosen so the
-// truncation and rounding errors both stay below 1e-8 relative.
+// First derivative of the fillet in phi by a central difference; the
+// fillet is an analytic function of phi (see fillet_point). Step chosen so
+// that truncation and rounding both stay below 1e-8 relative.
+ToothPoint fillet_slope(const PinionSpec& pinion, double phi) {
+  const double h1 = 1e-6;
+  const ToothPoint a = fillet_point(pinion, phi + h1), b = fillet_point(pinion, phi - h1);
+  return {(a.x - b.x) / (2 * h1), (a.y - b.y) / (2 * h1)};
+}
+
+// Fillet point and its first two derivatives in phi (central differences,
+// the second one with a step of its own for the same error bound).
 Derivs fillet_derivatives(const PinionSpec& pinion, double phi) {
   Derivs d;
   d.p = fillet_point(pinion, phi);
-  const double h1 = 1e-6;
-  const ToothPoint a = fillet_point(pinion, phi + h1), b = fillet_point(pinion, phi - h1);
-  d.d1 = {(a.x - b.x) / (2 * h1), (a.y - b.y) / (2 * h1)};
+  d.d1 = fillet_slope(pinion, phi);
   const double h2 = 1e-4;
   const ToothPoint c = fillet_point(pinion, phi + h2), e = fillet_point(pinion, phi - h2);
   d.d2 = {(c.x - 2 * d.p.x + e.x) / (h2 * h2), (c.y - 2 * d.p.y + e.y) / (h2 * h2)};
   return d;
 }
 
-// Angle between the fillet tangent at phi and the tooth centre line (y axis).
+// Angle between the fillet tangent at phi and the tooth centre line (y
+// axis). Only the slope: the search below calls it a few hundred times per
+// design.
 double tangent_angle(const PinionSpec& pinion, double phi) {
-  const Derivs d = fillet_derivatives(pinion, phi);
-  return std::atan2(std::abs(d.d1.x), std::abs(d.d1.y));
+  const ToothPoint d1 = fillet_slope(pinion, phi);
+  return std::atan2(std::abs(d1.x), std::abs(d1.y));
 }
 
 void check_factor(double v, const char* key) {
@@ -87,6 +95,8 @@ RootSection pinion_root_section(const PinionSpec& pinion, const MeshGeometry& g)
   }
   for (int it = 0; it < 80; ++it) {
     const double mid = 0.5 * (lo + hi);
+    // Adjacent doubles: every further step would leave lo and hi as they are.
+    if (mid == lo || mid == hi) break;
     if (tangent_angle(pinion, mid) - kCriticalTangent >= 0) {
       hi = mid;
     } else {
