@@ -213,7 +213,10 @@ TEST_F(StoreTest, SchemaOneFileIsUpgradedAndItsRowsHaveNoWarnings) {
     EXPECT_EQ(store.append(fresh), 2);
   }
   EXPECT_EQ(sql_text(db_, has_column), "1");
-  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 2");
+  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 3");
+  // The old row got its real columns from its blob; the view has them.
+  EXPECT_EQ(sql_text(db_, "SELECT module_m FROM evaluations WHERE id = 1"), "0.002");
+  EXPECT_EQ(sql_text(db_, "SELECT face_width_m FROM evaluations WHERE id = 2"), "0.06");
   EXPECT_EQ(sql_text(db_, "PRAGMA integrity_check"), "ok");
   auto store = EvaluationStore::open(db_, "fp", vars_, true);
   const auto rows = store.all();
@@ -227,13 +230,83 @@ TEST_F(StoreTest, UnknownSchemaVersionIsRefused) {
   write_schema_1_file(db_, {1.0, 2.0});
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(db_.c_str(), &db), SQLITE_OK);
-  ASSERT_EQ(sqlite3_exec(db, "UPDATE meta SET value = 'rackopt-evaluations 3' WHERE key = 'rackopt.schema'", nullptr,
+  ASSERT_EQ(sqlite3_exec(db, "UPDATE meta SET value = 'rackopt-evaluations 9' WHERE key = 'rackopt.schema'", nullptr,
                          nullptr, nullptr),
             SQLITE_OK);
   sqlite3_close(db);
   const std::string msg = thrown_message([&] { EvaluationStore::open(db_, "fp", vars_, true); });
-  EXPECT_NE(msg.find("another rackopt version (rackopt-evaluations 3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("another rackopt version (rackopt-evaluations 9"), std::string::npos) << msg;
   EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM pragma_table_info('evaluations') WHERE name = 'warnings'"), "0");
+}
+
+TEST(StoreColumnName, PlainSqlNamesOfVariablesAndMetrics) {
+  EXPECT_EQ(column_name("pinion.pressure_angle"), "pinion_pressure_angle");
+  EXPECT_EQ(column_name("wear_life_at_R(0.9)"), "wear_life_at_R_0_9");
+  EXPECT_EQ(column_name("min_stiffness_ks(500)"), "min_stiffness_ks_500");
+  EXPECT_EQ(column_name("contact_ratio"), "contact_ratio");
+  EXPECT_EQ(column_name("..a..b.."), "a_b");
+  EXPECT_EQ(column_name("3d"), "c_3d");
+  EXPECT_EQ(column_name("\xc3\xa9t\xc3\xa9"), "t");
+}
+
+// Every variable and metric is a real column of the `evaluations` view, so
+// that plain SQL filters evaluations; each column's unit and source name are
+// in value_columns; the models and warnings are beside them.
+TEST_F(StoreTest, VariablesAndMetricsAreRealColumnsSqlCanFilter) {
+  const std::vector<std::string> vars = {"pinion.module", "rack.span", "ok"};
+  StoreOptions options;
+  options.units = {{"pinion.module", "m"}, {"rack.span", "m"}, {"contact_ratio", "-"}, {"wear_life_at_R(0.9)", "s"}};
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars, false, options);
+    for (int i = 0; i < 5; ++i) {
+      RecordedEvaluation e;
+      e.x = {0.01 + 0.001 * i, 1.5, -0.0};
+      e.metrics = {{"contact_ratio", 1.3 + 0.05 * i}};
+      if (i >= 3) e.metrics.emplace_back("wear_life_at_R(0.9)", 1e9 * i);  // a column that appears later
+      e.ok = i != 2;
+      e.models = {"geometry", "stiffness_curve"};
+      e.warnings = {"undercut"};
+      store.append(e);
+    }
+    const auto rows = store.all();
+    EXPECT_EQ(rows[4].models, (std::vector<std::string>{"geometry", "stiffness_curve"}));
+  }
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM evaluations WHERE contact_ratio > 1.42"), "2");
+  EXPECT_EQ(sql_text(db_, "SELECT group_concat(id) FROM evaluations WHERE wear_life_at_R_0_9 IS NULL"), "1,2,3");
+  EXPECT_EQ(sql_text(db_, "SELECT pinion_module FROM evaluations WHERE id = 3"), "0.012");
+  EXPECT_EQ(sql_text(db_, "SELECT typeof(rack_span) FROM evaluations LIMIT 1"), "real");
+  // A variable named like one of the view's own columns gets another name.
+  EXPECT_EQ(sql_text(db_, "SELECT name FROM value_columns WHERE source = 'ok'"), "ok_2");
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM evaluations WHERE ok = 0"), "1");
+  EXPECT_EQ(sql_text(db_, "SELECT unit FROM value_columns WHERE name = 'wear_life_at_R_0_9'"), "s");
+  EXPECT_EQ(sql_text(db_, "SELECT kind || ' ' || source FROM value_columns WHERE name = 'pinion_module'"),
+            "variable pinion.module");
+  EXPECT_EQ(sql_text(db_, "SELECT models FROM evaluations WHERE id = 5"), "geometry,stiffness_curve");
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM evaluations WHERE warnings LIKE '%undercut%'"), "5");
+  // The blobs resume reads stay out of the view.
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM pragma_table_info('evaluations') WHERE name IN ('x', 'metric_values')"),
+            "0");
+  // Resumed: the columns are those of the file, and new rows fill them.
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars, true, options);
+    RecordedEvaluation e;
+    e.x = {0.02, 2.0, 1.0};
+    e.metrics = {{"wear_life_at_R(0.9)", 7e9}, {"contact_ratio", 1.45}};
+    store.append(e);
+  }
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM evaluations WHERE contact_ratio > 1.42"), "3");
+  EXPECT_EQ(sql_text(db_, "SELECT wear_life_at_R_0_9 FROM evaluations WHERE id = 6"), "7000000000.0");
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM value_columns"), "5");
+  EXPECT_EQ(sql_text(db_, "PRAGMA integrity_check"), "ok");
+}
+
+// An empty store taken over by another study loses the value columns of
+// the one before.
+TEST_F(StoreTest, ReclaimedEmptyStoreHasOnlyTheNewStudysColumns) {
+  { auto store = EvaluationStore::open(db_, "first", {"a.b", "c"}, false); }
+  { auto store = EvaluationStore::open(db_, "second", {"d"}, false); }
+  EXPECT_EQ(sql_text(db_, "SELECT group_concat(name) FROM value_columns"), "d");
+  EXPECT_EQ(sql_text(db_, "SELECT count(*) FROM pragma_table_info('evaluation_records') WHERE name = 'a_b'"), "0");
 }
 
 TEST_F(StoreTest, FindIsExactOnBitsAndSeesUncommittedRows) {

@@ -31,6 +31,7 @@ TEST(DesignWire, MetricsRoundTripWithTextsAndFlags) {
   a.metric_ok = {true, false, true};
   a.failure = "wear_life failed (x): \"quoted\", comma, newline\nand UTF-8 µm";
   a.warnings = {"rack foundation: outside", ""};
+  a.models = {"geometry", "stiffness_curve"};
   a.seconds = 0.004;
   DesignMetrics b;  // everything empty
   const auto back = decode_metrics(encode_metrics({a, b}));
@@ -41,6 +42,7 @@ TEST(DesignWire, MetricsRoundTripWithTextsAndFlags) {
   EXPECT_EQ(back[0].metric_ok, a.metric_ok);
   EXPECT_EQ(back[0].failure, a.failure);
   EXPECT_EQ(back[0].warnings, a.warnings);
+  EXPECT_EQ(back[0].models, a.models);
   EXPECT_EQ(back[0].seconds, a.seconds);
   EXPECT_TRUE(back[1].x.empty());
   EXPECT_TRUE(back[1].failure.empty());

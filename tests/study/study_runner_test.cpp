@@ -1,6 +1,7 @@
 #include "rackopt/study/study_runner.hpp"
 
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -104,6 +105,45 @@ TEST(StudySweep, WithoutObjectivesHasNoBestAndNoLeastInfeasible) {
   EXPECT_FALSE(q.best);
   ASSERT_TRUE(q.least_infeasible);
   EXPECT_FALSE(q.least_infeasible->feasible);
+}
+
+// The record of a study, as plain SQL sees it: every variable and metric a
+// real column in SI with its unit in value_columns, and the models each
+// design ran (docs/recorder.md, "Queries").
+TEST(StudyRecord, SqlFiltersVariablesAndMetricsWithTheirUnitsAndModels) {
+  StudySpec s = railway_spec(StudyKind::kSweep);
+  s.variables = {continuous("rack.span", 1.2, 3.0)};
+  s.variables[0].levels = 5;
+  s.objectives.clear();
+  s.constraints.clear();
+  s.report_metrics = {metrics::parse_metric_request("supports_per_metre"),
+                      metrics::parse_metric_request("contact_ratio")};
+  const std::string dir = scratch_path("record_columns");
+  const StudyResult r = run_study(s, options_in(dir));
+  ASSERT_EQ(r.sweep_points.size(), 5u);
+  std::size_t close_supports = 0;
+  for (const auto& p : r.sweep_points) close_supports += metric(p, "supports_per_metre") > 0.5 ? 1 : 0;
+  ASSERT_GT(close_supports, 0u);
+  ASSERT_LT(close_supports, 5u);
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2((dir + "/evaluations.sqlite").c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  auto text = [&](const std::string& sql) {
+    sqlite3_stmt* st = nullptr;
+    std::string out = "<error>";
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW) {
+      const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+      out = t ? t : "<null>";
+    }
+    sqlite3_finalize(st);
+    return out;
+  };
+  EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE supports_per_metre > 0.5"), std::to_string(close_supports));
+  EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE abs(supports_per_metre * rack_span - 1) > 1e-12"), "0");
+  EXPECT_EQ(text("SELECT unit FROM value_columns WHERE source = 'rack.span'"), "m");
+  EXPECT_EQ(text("SELECT unit FROM value_columns WHERE source = 'supports_per_metre'"), "1/m");
+  EXPECT_EQ(text("SELECT unit FROM value_columns WHERE name = 'contact_ratio'"), "-");
+  EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE models LIKE '%geometry%'"), std::to_string(r.evaluations));
+  sqlite3_close(db);
 }
 
 class StudySampledSweep : public ::testing::TestWithParam<SweepSpec::Method> {};

@@ -51,6 +51,32 @@ TEST(ParseQuantity, BareNumberTakesTheKindDefaultUnit) {
   EXPECT_EQ(default_unit(K::kDimensionless), "");
 }
 
+// Each kind's SI unit is one of its own units worth exactly 1 (the record's
+// columns name it).
+TEST(SiUnit, IsTheKindsUnitOfFactorOne) {
+  EXPECT_EQ(si_unit(K::kLength), "m");
+  EXPECT_EQ(si_unit(K::kAngle), "rad");
+  EXPECT_EQ(si_unit(K::kModulus), "Pa");
+  EXPECT_EQ(si_unit(K::kForce), "N");
+  EXPECT_EQ(si_unit(K::kTorque), "N*m");
+  EXPECT_EQ(si_unit(K::kStiffness), "N/m");
+  EXPECT_EQ(si_unit(K::kArea), "m^2");
+  EXPECT_EQ(si_unit(K::kSecondMoment), "m^4");
+  EXPECT_EQ(si_unit(K::kTime), "s");
+  EXPECT_EQ(si_unit(K::kHardness), "Pa");
+  EXPECT_EQ(si_unit(K::kRate), "1/s");
+  EXPECT_EQ(si_unit(K::kMass), "kg");
+  EXPECT_EQ(si_unit(K::kDensity), "kg/m^3");
+  EXPECT_EQ(si_unit(K::kSpeed), "m/s");
+  EXPECT_EQ(si_unit(K::kPower), "W");
+  EXPECT_EQ(si_unit(K::kDimensionless), "");
+  EXPECT_EQ(si_unit(K::kCount), "");
+  for (K k : {K::kLength, K::kAngle, K::kModulus, K::kForce, K::kTorque, K::kStiffness, K::kArea, K::kSecondMoment,
+              K::kTime, K::kHardness, K::kRate, K::kMass, K::kDensity, K::kSpeed, K::kPower}) {
+    EXPECT_EQ(unit_factor(si_unit(k), k), 1.0) << kind_name(k);
+  }
+}
+
 TEST(ParseQuantity, OtherKinds) {
   EXPECT_DOUBLE_EQ(parse_quantity("14 deg", K::kAngle), 14.0 * kPi / 180.0);
   EXPECT_DOUBLE_EQ(parse_quantity("14\xC2\xB0", K::kAngle), 14.0 * kPi / 180.0);  // 14°

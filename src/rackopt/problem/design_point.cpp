@@ -4,18 +4,6 @@
 
 namespace rackopt {
 
-namespace {
-
-// The unit whose factor is exactly 1 (the SI unit) of a kind.
-std::string si_unit(QuantityKind kind) {
-  for (const auto& u : unit_names(kind)) {
-    if (unit_factor(u, kind) == 1.0) return u;
-  }
-  return std::string(default_unit(kind));
-}
-
-}  // namespace
-
 void set_problem_value(ProblemTree& tree, const std::string& key_path, double value_si) {
   const auto kind = problem_key_kind(key_path);
   const SourceMark where{"<design variable>", 0, 0};
@@ -34,7 +22,7 @@ void set_problem_value(ProblemTree& tree, const std::string& key_path, double va
   } else if (*kind == QuantityKind::kDimensionless) {
     text = format_number(value_si, 17);
   } else {
-    text = format_number(value_si, 17) + " " + si_unit(*kind);
+    text = format_number(value_si, 17) + " " + std::string(si_unit(*kind));
   }
   // A number (sign, digits, '.', 'e') and a unit name: YAML reads it as itself.
   set_plain_scalar(tree.root, key_path, std::move(text));

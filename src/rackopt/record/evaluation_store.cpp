@@ -2,7 +2,9 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <bit>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -15,9 +17,13 @@
 namespace rackopt::record {
 namespace {
 
-// Bumped whenever the tables change. Version 2 added evaluations.warnings;
-// a version-1 file is upgraded in place when opened (add_warnings_column).
-constexpr const char* kSchemaVersion = "rackopt-evaluations 2";
+// Bumped whenever the tables change. Version 2 added the warnings; version
+// 3 renamed the table to evaluation_records, added the models and one real
+// column per variable and metric, and the `evaluations` view over them.
+// Files of versions 1 and 2 are upgraded in place when opened
+// (load_or_create).
+constexpr const char* kSchemaVersion = "rackopt-evaluations 3";
+constexpr const char* kSchemaVersion2 = "rackopt-evaluations 2";
 constexpr const char* kSchemaVersion1 = "rackopt-evaluations 1";
 constexpr const char* kSchemaKey = "rackopt.schema";
 constexpr const char* kFingerprintKey = "rackopt.study_fingerprint";
@@ -28,7 +34,10 @@ constexpr const char* kCreateSchema = R"sql(
 CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY NOT NULL, value TEXT NOT NULL) WITHOUT ROWID;
 CREATE TABLE IF NOT EXISTS variables(position INTEGER PRIMARY KEY, name TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS metric_names(metric_id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE);
-CREATE TABLE IF NOT EXISTS evaluations(
+CREATE TABLE IF NOT EXISTS value_columns(
+  name TEXT PRIMARY KEY NOT NULL COLLATE NOCASE, source TEXT NOT NULL, kind TEXT NOT NULL, unit TEXT NOT NULL,
+  position INTEGER NOT NULL UNIQUE);
+CREATE TABLE IF NOT EXISTS evaluation_records(
   id INTEGER PRIMARY KEY,
   phase TEXT NOT NULL,
   x_hash INTEGER NOT NULL,
@@ -42,13 +51,50 @@ CREATE TABLE IF NOT EXISTS evaluations(
   message TEXT NOT NULL,
   gradient_probe INTEGER NOT NULL,
   seconds REAL NOT NULL,
-  warnings TEXT NOT NULL DEFAULT '');
-CREATE INDEX IF NOT EXISTS evaluations_by_x ON evaluations(x_hash);
+  warnings TEXT NOT NULL DEFAULT '',
+  models TEXT NOT NULL DEFAULT '');
+CREATE INDEX IF NOT EXISTS evaluations_by_x ON evaluation_records(x_hash);
 )sql";
 
 constexpr const char* kSelectColumns =
     "SELECT id, phase, x, objectives, inequality, equality, metric_ids, metric_values, ok, message, "
-    "gradient_probe, seconds, warnings FROM evaluations ";
+    "gradient_probe, seconds, warnings, models FROM evaluation_records ";
+
+// The view's own columns: a variable or metric column takes another name.
+constexpr const char* kViewColumns[] = {"id", "phase", "ok", "message", "gradient_probe", "seconds", "models",
+                                         "warnings"};
+// ... nor may it take a name of the record table's own columns.
+constexpr const char* kRecordColumns[] = {"x_hash", "x", "objectives", "inequality", "equality", "metric_ids",
+                                           "metric_values"};
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Names and lists of models as one TEXT cell: "geometry,stiffness_curve".
+std::string join_models(const std::vector<std::string>& models) {
+  std::string out;
+  for (const auto& m : models) {
+    if (m.find(',') != std::string::npos) throw std::invalid_argument("EvaluationStore: a model name with a comma: " + m);
+    out += (out.empty() ? "" : ",") + m;
+  }
+  return out;
+}
+
+std::vector<std::string> split_models(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t end = comma == std::string::npos ? text.size() : comma;
+    out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 // --- little-endian byte encoding of numbers (bit exact, portable files) -----
 template <class T>
@@ -135,6 +181,24 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 }  // namespace
 
+std::string column_name(const std::string& name) {
+  std::string out;
+  for (char c : name) {
+    const bool word = std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    if (word && static_cast<unsigned char>(c) < 128) {
+      out.push_back(c);
+    } else if (!out.empty() && out.back() != '_') {
+      out.push_back('_');
+    }
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  std::size_t lead = 0;
+  while (lead < out.size() && out[lead] == '_') ++lead;
+  out.erase(0, lead);
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "c_" + out;
+  return out;
+}
+
 struct EvaluationStore::Impl {
   std::string path;
   StoreOptions options;
@@ -147,6 +211,12 @@ struct EvaluationStore::Impl {
   bool in_transaction = false;
   std::chrono::steady_clock::time_point last_commit = std::chrono::steady_clock::now();
   Stmt insert_eval, insert_metric_name, find_by_x, begin, commit;
+  // The real columns: the variables' in order, then the metrics' by id.
+  std::vector<std::string> variable_columns;
+  std::vector<std::string> metric_columns;  // metric_id - 1 -> column
+  std::vector<std::string> taken;           // lower-case names in use
+
+  static constexpr int kRecordParams = 14;  // insert_eval's parameters before the real columns
 
   ~Impl() {
     try {
@@ -272,7 +342,95 @@ struct EvaluationStore::Impl {
     run(insert_metric_name.get(), "recording a metric name");
     metric_by_id.push_back(name);
     metric_ids.emplace(name, id);
+    metric_columns.push_back(add_column(name, "metric"));
+    rebuild_view();
+    prepare_insert();
     return id;
+  }
+
+  std::string unused_column(const std::string& source) {
+    const std::string base = column_name(source);
+    std::string name = base;
+    for (int k = 2; std::find(taken.begin(), taken.end(), lower(name)) != taken.end(); ++k)
+      name = base + "_" + std::to_string(k);
+    taken.push_back(lower(name));
+    return name;
+  }
+
+  // A real column for a variable or metric: added to the records, described
+  // in value_columns. Returns its name.
+  std::string add_column(const std::string& source, const char* kind) {
+    const std::string name = unused_column(source);
+    exec(("ALTER TABLE evaluation_records ADD COLUMN " + quoted(name) + " REAL").c_str(), "adding a value column");
+    Stmt s = prepare("INSERT INTO value_columns(name, source, kind, unit, position) "
+                     "VALUES(?1, ?2, ?3, ?4, (SELECT count(*) FROM value_columns))");
+    bind_text(s.get(), 1, name);
+    bind_text(s.get(), 2, source);
+    bind_text(s.get(), 3, kind);
+    const auto unit = options.units.find(source);
+    bind_text(s.get(), 4, unit == options.units.end() ? std::string() : unit->second);
+    run(s.get(), "describing a value column");
+    return name;
+  }
+
+  // The view users query: the records' readable columns and the real ones,
+  // without the blobs resume reads.
+  void rebuild_view() {
+    std::string sql = "DROP VIEW IF EXISTS evaluations; CREATE VIEW evaluations AS SELECT id, phase, ok, message, "
+                      "gradient_probe, seconds";
+    for (const auto& c : variable_columns) sql += ", " + quoted(c);
+    for (const auto& c : metric_columns) sql += ", " + quoted(c);
+    sql += ", models, warnings FROM evaluation_records";
+    exec(sql.c_str(), "creating the evaluations view");
+  }
+
+  void prepare_insert() {
+    std::string sql = "INSERT INTO evaluation_records(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
+                      "metric_values, ok, message, gradient_probe, seconds, warnings, models";
+    std::string values = "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13,?14";
+    int k = kRecordParams;
+    for (const auto* columns : {&variable_columns, &metric_columns}) {
+      for (const auto& c : *columns) {
+        sql += ", " + quoted(c);
+        values += ",?" + std::to_string(++k);
+      }
+    }
+    insert_eval = prepare((sql + ") " + values + ")").c_str());
+  }
+
+  // Binds the real columns of `e` (from parameter kRecordParams + 1 on);
+  // a metric the row lacks stays NULL.
+  void bind_values(sqlite3_stmt* s, const RecordedEvaluation& e) {
+    int k = kRecordParams;
+    for (double v : e.x) sqlite3_bind_double(s, ++k, v);
+    for (const auto& [name, value] : e.metrics)
+      sqlite3_bind_double(s, kRecordParams + static_cast<int>(e.x.size() + metric_ids.at(name)), value);
+  }
+
+  // Rows recorded before version 3 get their real columns from their blobs.
+  void fill_value_columns() {
+    std::string sql = "UPDATE evaluation_records SET ";
+    int k = 0;
+    for (const auto* columns : {&variable_columns, &metric_columns})
+      for (const auto& c : *columns) {
+        sql += (k ? ", " : "") + quoted(c);
+        sql += " = ?" + std::to_string(++k);
+      }
+    if (k == 0) return;
+    sql += ", models = '' WHERE id = ?" + std::to_string(k + 1);
+    Stmt update = prepare(sql.c_str());
+    Stmt rows = prepare((std::string(kSelectColumns) + "ORDER BY id").c_str());
+    int rc;
+    while ((rc = sqlite3_step(rows.get())) == SQLITE_ROW) {
+      const RecordedEvaluation e = read_row(rows.get());
+      int j = 0;
+      for (double v : e.x) sqlite3_bind_double(update.get(), ++j, v);
+      for (const auto& [name, value] : e.metrics)
+        sqlite3_bind_double(update.get(), static_cast<int>(e.x.size() + metric_ids.at(name)), value);
+      sqlite3_bind_int64(update.get(), k + 1, e.id);
+      run(update.get(), "filling the value columns of an older row");
+    }
+    if (rc != SQLITE_DONE) fail("reading older rows", rc);
   }
 
   RecordedEvaluation read_row(sqlite3_stmt* s) const {
@@ -311,6 +469,7 @@ struct EvaluationStore::Impl {
     e.gradient_probe = sqlite3_column_int(s, 10) != 0;
     e.seconds = sqlite3_column_double(s, 11);
     if (!decode_warnings(text(12), e.warnings)) fail("reading a row (malformed warnings)", SQLITE_CORRUPT);
+    e.models = split_models(text(13));
     return e;
   }
 
@@ -387,9 +546,13 @@ EvaluationStore EvaluationStore::open(const std::string& path, const std::string
 
 void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint, const std::string& fingerprint_format,
                                            const std::vector<std::string>& variable_names, bool resume) {
+  // Before version 3 the records were the table `evaluations`, a name the
+  // view now has.
+  if (scalar("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = 'evaluations'") > 0)
+    exec("ALTER TABLE evaluations RENAME TO evaluation_records", "renaming the records table");
   exec(kCreateSchema, "creating the tables");
   const auto schema = read_meta(kSchemaKey);
-  if (schema && *schema != kSchemaVersion && *schema != kSchemaVersion1) {
+  if (schema && *schema != kSchemaVersion && *schema != kSchemaVersion2 && *schema != kSchemaVersion1) {
     throw std::runtime_error("'" + path + "' was written by another rackopt version (" + *schema +
                              ", this one reads " + kSchemaVersion +
                              "); delete it or choose another --out folder.");
@@ -397,10 +560,14 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
   // Version 1 had no warnings column: add it (rows recorded before read as
   // having no warning). Inside the open transaction, so a refused open below
   // rolls the upgrade back with everything else.
-  if (scalar("SELECT count(*) FROM pragma_table_info('evaluations') WHERE name = 'warnings'") == 0) {
-    exec("ALTER TABLE evaluations ADD COLUMN warnings TEXT NOT NULL DEFAULT ''", "adding the warnings column");
+  if (scalar("SELECT count(*) FROM pragma_table_info('evaluation_records') WHERE name = 'warnings'") == 0) {
+    exec("ALTER TABLE evaluation_records ADD COLUMN warnings TEXT NOT NULL DEFAULT ''", "adding the warnings column");
   }
-  count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations"));
+  // Version 2 had no models column.
+  if (scalar("SELECT count(*) FROM pragma_table_info('evaluation_records') WHERE name = 'models'") == 0) {
+    exec("ALTER TABLE evaluation_records ADD COLUMN models TEXT NOT NULL DEFAULT ''", "adding the models column");
+  }
+  count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluation_records"));
   if (count > 0) {
     const std::string stored_format = read_meta(kFingerprintFormatKey).value_or(kFirstFingerprintFormat);
     if (stored_format != fingerprint_format) {
@@ -434,11 +601,15 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
       throw OutputFolderConflict("'" + path + "' records other design variables than this study (same "
                                "fingerprint but different names or order); choose another --out folder.");
     }
-    failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluations WHERE ok = 0"));
+    failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluation_records WHERE ok = 0"));
     if (schema.value_or("") != kSchemaVersion) write_meta(kSchemaKey, kSchemaVersion);  // upgraded above
   } else {
-    // Nothing recorded: the file is (re)claimed by this study.
-    exec("DELETE FROM variables; DELETE FROM metric_names;", "resetting an empty store");
+    // Nothing recorded: the file is (re)claimed by this study, without the
+    // value columns of the one before.
+    exec("DROP VIEW IF EXISTS evaluations; DROP TABLE evaluation_records; DELETE FROM variables; "
+         "DELETE FROM metric_names; DELETE FROM value_columns;",
+         "resetting an empty store");
+    exec(kCreateSchema, "creating the tables");
     write_meta(kSchemaKey, kSchemaVersion);
     write_meta(kFingerprintKey, study_fingerprint);
     write_meta(kFingerprintFormatKey, fingerprint_format);
@@ -463,12 +634,34 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
     }
     if (step != SQLITE_DONE) fail("reading metric names", step);
   }
+  // The real columns: as recorded, or made now for a new file or one of an
+  // older version (whose rows then get their values from their blobs).
+  for (const char* c : kViewColumns) taken.push_back(c);
+  for (const char* c : kRecordColumns) taken.push_back(c);
+  {
+    Stmt s = prepare("SELECT name, kind FROM value_columns ORDER BY position");
+    int step;
+    while ((step = sqlite3_step(s.get())) == SQLITE_ROW) {
+      const std::string name(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0)));
+      const std::string kind(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 1)));
+      (kind == "variable" ? variable_columns : metric_columns).push_back(name);
+      taken.push_back(lower(name));
+    }
+    if (step != SQLITE_DONE) fail("reading the value columns", step);
+  }
+  if ((!variable_columns.empty() && variable_columns.size() != variables.size()) ||
+      metric_columns.size() > metric_by_id.size())
+    fail("reading the value columns (they do not match the variables and metrics)", SQLITE_CORRUPT);
+  const bool older_rows = count > 0 && variable_columns.empty() && !variables.empty();
+  if (variable_columns.empty())
+    for (const auto& v : variables) variable_columns.push_back(add_column(v, "variable"));
+  for (std::size_t i = metric_columns.size(); i < metric_by_id.size(); ++i)
+    metric_columns.push_back(add_column(metric_by_id[i], "metric"));
+  if (older_rows) fill_value_columns();
+  rebuild_view();
   begin = prepare("BEGIN");
   commit = prepare("COMMIT");
-  insert_eval = prepare(
-      "INSERT INTO evaluations(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
-      "metric_values, ok, message, gradient_probe, seconds, warnings) "
-      "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13)");
+  prepare_insert();
   insert_metric_name = prepare("INSERT INTO metric_names(metric_id, name) VALUES(?1, ?2)");
   find_by_x = prepare(
       (std::string(kSelectColumns) + "WHERE x_hash = ?1 AND x = ?2 ORDER BY id LIMIT 1").c_str());
@@ -516,6 +709,8 @@ std::int64_t EvaluationStore::append(const RecordedEvaluation& e) {
   sqlite3_bind_int(s, 11, e.gradient_probe ? 1 : 0);
   sqlite3_bind_double(s, 12, e.seconds);
   m.bind_text(s, 13, encode_warnings(e.warnings));
+  m.bind_text(s, 14, join_models(e.models));
+  m.bind_values(s, e);
   m.run(s, "recording an evaluation");
   const std::int64_t id = sqlite3_last_insert_rowid(m.db);
   ++m.count;

@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -28,6 +29,20 @@
 #include <vector>
 
 namespace rackopt::record {
+
+// Besides the bit-exact record that resume reads, every variable and every
+// metric is a real column (SQLite REAL, SI) of the `evaluations` view, named
+// by column_name(), so that plain SQL can filter and sort evaluations
+// (docs/recorder.md, "Queries").
+
+// The SQL column of a variable or metric name: every run of characters other
+// than ASCII letters, digits and '_' becomes one '_', leading and trailing
+// '_' are dropped, and a name that is then empty or starts with a digit gets
+// a leading "c_": "pinion.pressure_angle" -> pinion_pressure_angle,
+// "wear_life_at_R(0.9)" -> wear_life_at_R_0_9. The store appends _2, _3, ...
+// when two names meet (SQL names ignore case) or a name is one of the
+// view's own columns.
+std::string column_name(const std::string& name);
 
 // One evaluation as recorded. Every double round-trips bit for bit (stored as
 // raw little-endian IEEE-754 bytes), including -0.0, denormals, infinities and
@@ -47,6 +62,9 @@ struct RecordedEvaluation {
   // text round-trips. Rows recorded by a store of schema version 1 (before
   // warnings were recorded) read back with none.
   std::vector<std::string> warnings;
+  // The models computed for this design ("geometry", "stiffness_curve", ...;
+  // names without commas). Rows recorded before version 3 read back with none.
+  std::vector<std::string> models;
 };
 
 // The output folder already holds results this run may not touch: another
@@ -67,6 +85,10 @@ struct StoreOptions {
   // fingerprints cannot be compared). A file written before formats were
   // stored counts as format "1".
   std::string fingerprint_format = "1";
+  // SI unit text of each variable and metric by name ("m", "rad", "N/m",
+  // "-"), written beside its real column in the `value_columns` table; a
+  // name not listed gets "". Only read when a column is created.
+  std::map<std::string, std::string> units;
 };
 
 class EvaluationStore {

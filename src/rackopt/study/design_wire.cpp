@@ -98,6 +98,8 @@ std::string encode_metrics(const std::vector<DesignMetrics>& results) {
     w.text(m.failure);
     w.count(m.warnings.size());
     for (const std::string& warning : m.warnings) w.text(warning);
+    w.count(m.models.size());
+    for (const std::string& model : m.models) w.text(model);
     w.number(m.seconds);
   }
   return w.take();
@@ -114,6 +116,8 @@ std::vector<DesignMetrics> decode_metrics(std::string_view bytes) {
     m.failure = r.text();
     m.warnings.resize(r.count());
     for (std::string& warning : m.warnings) warning = r.text();
+    m.models.resize(r.count());
+    for (std::string& model : m.models) model = r.text();
     m.seconds = r.number();
   }
   if (!r.done()) throw std::runtime_error("design wire: bytes after the results");

@@ -1,6 +1,8 @@
 #include "rackopt/study/evaluation_ledger.hpp"
 
 #include "rackopt/core/parallel_for.hpp"
+#include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/units/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +35,13 @@ EvaluationLedger::EvaluationLedger(const StudySpec& spec, const RunOptions& opti
 void EvaluationLedger::open_store(const std::string& path) {
   record::StoreOptions store_options;
   store_options.fingerprint_format = kStudyFingerprintFormat;
+  // The units of the record's real columns (docs/recorder.md, "Queries").
+  for (const auto& v : spec_.variables) {
+    const std::string_view unit = si_unit(v.kind);
+    store_options.units[v.key] = unit.empty() ? "-" : std::string(unit);  // "-" as for the metrics
+  }
+  for (const auto& m : spec_.all_metrics())
+    store_options.units[metrics::to_string(m)] = std::string(metrics::find_metric(m.name).unit);
   store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume,
                                                store_options));
   preexisting_rows_ = static_cast<std::int64_t>(store_->size());
@@ -63,6 +72,7 @@ DesignEvaluation EvaluationLedger::rebuild(const record::RecordedEvaluation& r) 
   }
   d.evaluation = base_.map_metrics(d.metric_values, d.metric_ok, r.message);
   d.warnings = r.warnings;
+  d.models = r.models;
   if (!r.ok && d.evaluation.ok()) {
     // Recorded as failed although every metric is present: trust the record.
     d.evaluation = solvers::Evaluation{};
@@ -207,6 +217,7 @@ void EvaluationLedger::append(const DesignEvaluation& d, const std::string& labe
   e.gradient_probe = gradient_probe;
   e.seconds = std::isfinite(d.seconds) ? d.seconds : 0.0;
   e.warnings = d.warnings;
+  e.models = d.models;
   store_->append(e);
 }
 

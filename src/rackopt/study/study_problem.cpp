@@ -269,6 +269,7 @@ DesignMetrics StudyProblem::compute_metrics(std::span<const double> x_si, unsign
                             "): " + f->message;
     }
     d.warnings = mv.warnings;
+    d.models = mv.models_run.names();
   } catch (const InputError& e) {
     // A range check of the loader that only this design breaks (e.g. a
     // clearance below -0.25 m at a small module): an impossible design, not
@@ -288,6 +289,7 @@ DesignEvaluation StudyProblem::to_evaluation(DesignMetrics m) const {
   d.metric_values = std::move(m.metric_values);
   d.metric_ok = std::move(m.metric_ok);
   d.warnings = std::move(m.warnings);
+  d.models = std::move(m.models);
   d.seconds = m.seconds;
   return d;
 }

@@ -41,6 +41,7 @@ struct DesignEvaluation {
   std::vector<bool> metric_ok;
   solvers::Evaluation evaluation;     // as the solver sees it (scaled, minimized)
   std::vector<std::string> warnings;  // model warnings of this design
+  std::vector<std::string> models;    // the models computed for it ("geometry", "stiffness_curve", ...)
   double seconds = 0;                 // wall time of the model evaluation (0 when rebuilt)
 };
 
@@ -53,6 +54,7 @@ struct DesignMetrics {
   std::vector<bool> metric_ok;
   std::string failure;                // why the design failed ("" when every metric is ok)
   std::vector<std::string> warnings;  // model warnings of this design
+  std::vector<std::string> models;    // the models computed for it ("geometry", "stiffness_curve", ...)
   double seconds = 0;                 // wall time of the models
 };
 

@@ -11,29 +11,6 @@ namespace rackopt::study_report {
 // The report reads the study layer's results and settings throughout.
 using namespace rackopt::study;
 
-std::string si_unit(QuantityKind kind) {
-  switch (kind) {
-    case QuantityKind::kDimensionless:
-    case QuantityKind::kCount: return "";
-    case QuantityKind::kLength: return "m";
-    case QuantityKind::kAngle: return "rad";
-    case QuantityKind::kModulus: return "Pa";
-    case QuantityKind::kForce: return "N";
-    case QuantityKind::kTorque: return "N*m";
-    case QuantityKind::kStiffness: return "N/m";
-    case QuantityKind::kArea: return "m^2";
-    case QuantityKind::kSecondMoment: return "m^4";
-    case QuantityKind::kTime: return "s";
-    case QuantityKind::kHardness: return "Pa";
-    case QuantityKind::kRate: return "1/s";
-    case QuantityKind::kMass: return "kg";
-    case QuantityKind::kDensity: return "kg/m^3";
-    case QuantityKind::kSpeed: return "m/s";
-    case QuantityKind::kPower: return "W";
-  }
-  return "";
-}
-
 std::string unit_suffix(const std::string& unit) {
   if (unit.empty() || unit == "-") return "";
   std::string u = unit;
@@ -79,7 +56,7 @@ MetricUnit metric_unit(const std::string& label) {
 
 VariableUnit variable_unit(const DesignVariable& v) {
   VariableUnit u;
-  u.si = si_unit(v.kind);
+  u.si = std::string(si_unit(v.kind));
   u.display = v.unit.empty() ? std::string(default_unit(v.kind)) : v.unit;
   if (!u.display.empty()) {
     try {

@@ -14,10 +14,6 @@
 
 namespace rackopt::study_report {
 
-// The SI unit of `kind` as the report writes it ("N/m", "m^2"); "" for
-// dimensionless quantities and counts.
-std::string si_unit(QuantityKind kind);
-
 // A unit as a column-name suffix: "N/m" -> "N_per_m", "1/m" -> "per_m",
 // "m^2" -> "m2", "N*m" -> "N_m", "-" and "" -> "".
 std::string unit_suffix(const std::string& unit);

@@ -36,7 +36,7 @@ void json_design(JsonWriter& j, const StudySpec& spec, const DesignResult& d, st
       j.key("value").null();
       j.key("display").value("");
     }
-    j.key("unit").value(si_unit(v.kind));
+    j.key("unit").value(std::string(si_unit(v.kind)));
     j.end_object();
   }
   j.end_object();
@@ -106,7 +106,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   for (const auto& v : spec.variables) {
     j.begin_object();
     j.key("name").value(v.key);
-    j.key("unit").value(si_unit(v.kind));
+    j.key("unit").value(std::string(si_unit(v.kind)));
     j.key("display_unit").value(variable_unit(v).display);
     j.key("lower").value(v.lower);
     j.key("upper").value(v.upper);

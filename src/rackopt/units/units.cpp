@@ -294,6 +294,13 @@ std::string_view default_unit(QuantityKind kind) {
   return "";
 }
 
+std::string_view si_unit(QuantityKind kind) {
+  for (const auto& u : kUnits) {
+    if (u.kind == kind && u.si_per_unit == 1.0) return u.name;
+  }
+  return "";
+}
+
 std::vector<std::string> unit_names(QuantityKind kind) {
   std::vector<std::string> out;
   for (const auto& u : kUnits) {

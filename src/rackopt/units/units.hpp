@@ -48,6 +48,9 @@ std::string_view kind_name(QuantityKind kind);
 // Unit assumed for a bare number ("" for dimensionless and count).
 std::string_view default_unit(QuantityKind kind);
 
+// The SI unit values of `kind` are in: "m", "rad", "Pa", "N*m", "1/s", ...;
+// "" for dimensionless and count.
+std::string_view si_unit(QuantityKind kind);
 // Canonical names of the units accepted for a kind, in a stable order
 // (first = default unit). Empty for dimensionless and count.
 std::vector<std::string> unit_names(QuantityKind kind);
