@@ -48,7 +48,8 @@ def summary(d):
     return drop_timings(s)
 def records(d):
     rows = list(csv.reader(open(d + "/evaluations.csv", newline="")))
-    i = rows[0].index("seconds")
+    # The wall time's column: "seconds_s" (before units in headers: "seconds").
+    i = rows[0].index("seconds_s") if "seconds_s" in rows[0] else rows[0].index("seconds")
     return [r[:i] + r[i + 1:] for r in rows]
 ok = True
 if summary(a) != summary(b):

@@ -69,7 +69,7 @@ std::vector<std::string> record_rows(const std::string& out_dir) {
     cells.push_back(cell);
     if (seconds_column == std::string::npos) {
       for (std::size_t i = 0; i < cells.size(); ++i)
-        if (cells[i] == "seconds") seconds_column = i;
+        if (cells[i] == "seconds_s") seconds_column = i;
     }
     std::string row;
     for (std::size_t i = 0; i < cells.size(); ++i)

@@ -527,10 +527,11 @@ TEST_F(StoreTest, CsvExportReadsBackExactly) {
   ss << std::ifstream(csv).rdbuf();
   const auto rows = parse_csv(ss.str());
   ASSERT_EQ(rows.size(), 3u);
-  const std::vector<std::string> header = {"id", "phase", "ok", "message", "gradient_probe", "seconds",
-                                           "module_m", "face_width_m", "objective_0", "objective_1",
-                                           "objective_2", "inequality_0", "inequality_1", "mass_kg", "life_s",
-                                           "stiffness_N_per_m"};
+  // This store was opened without units: names as they are.
+  const std::vector<std::string> header = {"id", "phase", "ok", "message", "gradient_probe", "seconds_s",
+                                           "module_m", "face_width_m", "scaled_objective_0", "scaled_objective_1",
+                                           "scaled_objective_2", "scaled_inequality_0", "scaled_inequality_1",
+                                           "mass_kg", "life_s", "stiffness_N_per_m"};
   EXPECT_EQ(rows[0], header);
   for (const auto& r : rows) ASSERT_EQ(r.size(), header.size());
   auto num = [](const std::string& s) { return std::strtod(s.c_str(), nullptr); };

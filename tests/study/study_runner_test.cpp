@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -144,6 +145,11 @@ TEST(StudyRecord, SqlFiltersVariablesAndMetricsWithTheirUnitsAndModels) {
   EXPECT_EQ(text("SELECT unit FROM value_columns WHERE name = 'contact_ratio'"), "-");
   EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE models LIKE '%geometry%'"), std::to_string(r.evaluations));
   sqlite3_close(db);
+  // evaluations.csv names the same units in its header.
+  std::ifstream csv(r.evaluations_csv_path);
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "id,phase,ok,message,gradient_probe,seconds_s,rack.span_m,supports_per_metre_per_m,contact_ratio");
 }
 
 class StudySampledSweep : public ::testing::TestWithParam<SweepSpec::Method> {};

@@ -751,6 +751,19 @@ std::size_t EvaluationStore::committed_size() const { return impl_->committed; }
 std::size_t EvaluationStore::dimension() const { return impl_->variables.size(); }
 const std::vector<std::string>& EvaluationStore::variable_names() const { return impl_->variables; }
 std::vector<std::string> EvaluationStore::metric_names() const { return impl_->metric_by_id; }
+
+std::map<std::string, std::string> EvaluationStore::column_units() const {
+  impl_->require_open("EvaluationStore::column_units");
+  std::map<std::string, std::string> out;
+  Stmt s = impl_->prepare("SELECT source, unit FROM value_columns");
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) {
+    out.emplace(reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 0)),
+                reinterpret_cast<const char*>(sqlite3_column_text(s.get(), 1)));
+  }
+  if (rc != SQLITE_DONE) impl_->fail("reading the value columns' units", rc);
+  return out;
+}
 const std::string& EvaluationStore::path() const { return impl_->path; }
 
 void EvaluationStore::set_meta(const std::string& key, const std::string& value) {

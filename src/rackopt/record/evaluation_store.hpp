@@ -157,6 +157,9 @@ class EvaluationStore {
   const std::vector<std::string>& variable_names() const;
   // Every metric name seen so far, in order of first appearance.
   std::vector<std::string> metric_names() const;
+  // The SI unit of each variable and metric with a real column, by name (as
+  // StoreOptions::units gave it when the column was made; "" if none).
+  std::map<std::string, std::string> column_units() const;
   const std::string& path() const;
 
   // Free key/value pairs of the study (status "running"/"finished", summary
@@ -175,10 +178,14 @@ class EvaluationStore {
 // '\n' line ends like the project's other CSVs),
 // atomically: a temporary file in the same folder, fsynced, then renamed over
 // `path`, so a reader never sees a half-written table. Columns:
-//   id, phase, ok (1/0), message, gradient_probe (1/0), seconds,
-//   one column per variable_names entry (x values, SI),
-//   objective_0.., inequality_0.., equality_0.. (as many as the longest row),
-//   one column per metric_names entry (SI; empty where a row lacks it).
+//   id, phase, ok (1/0), message, gradient_probe (1/0), seconds_s,
+//   one column per variable_names entry (x values, SI), named with its
+//   unit as with_suffix(name, unit) ("rack.span_m") when the store has one,
+//   scaled_objective_0.., scaled_inequality_0.., scaled_equality_0.. (the
+//   solver's values: divided by their scales, minimized, g <= 0 feasible;
+//   as many as the longest row),
+//   one column per metric_names entry (SI; empty where a row lacks it),
+//   named with its unit likewise ("wear_life_at_R(0.9)_s").
 // Numbers are written in the shortest form that reads back to the same double.
 // Throws std::invalid_argument when variable_names.size() != store.dimension(),
 // std::runtime_error naming the path when the file cannot be written.

@@ -1,5 +1,6 @@
 // CSV export of a study's evaluations (declared in evaluation_store.hpp).
 #include <algorithm>
+#include <map>
 #include <charconv>
 #include <string>
 #include <unordered_map>
@@ -7,6 +8,8 @@
 #include "rackopt/core/atomic_file.hpp"
 #include "rackopt/core/text.hpp"
 #include "rackopt/record/evaluation_store.hpp"
+
+#include "rackopt/units/units.hpp"
 
 namespace rackopt::record {
 namespace {
@@ -42,13 +45,21 @@ void write_evaluations_csv(const EvaluationStore& store, const std::vector<std::
     if (!first) out += ',';
     put_field(out, name);
   };
+  // Variables and metrics carry their SI unit in the name, as the other
+  // CSVs of a study do ("rack.span_m", "wear_life_at_R(0.9)_s"); the
+  // solver's own scaled values say so.
+  const std::map<std::string, std::string> units = store.column_units();
+  auto with_unit = [&](const std::string& name) {
+    const auto u = units.find(name);
+    return u == units.end() ? name : with_suffix(name, u->second);
+  };
   header("id", true);
-  for (const char* h : {"phase", "ok", "message", "gradient_probe", "seconds"}) header(h);
-  for (const auto& v : variable_names) header(v);
-  for (std::size_t i = 0; i < n_obj; ++i) header("objective_" + std::to_string(i));
-  for (std::size_t i = 0; i < n_ineq; ++i) header("inequality_" + std::to_string(i));
-  for (std::size_t i = 0; i < n_eq; ++i) header("equality_" + std::to_string(i));
-  for (const auto& m : metric_names) header(m);
+  for (const char* h : {"phase", "ok", "message", "gradient_probe", "seconds_s"}) header(h);
+  for (const auto& v : variable_names) header(with_unit(v));
+  for (std::size_t i = 0; i < n_obj; ++i) header("scaled_objective_" + std::to_string(i));
+  for (std::size_t i = 0; i < n_ineq; ++i) header("scaled_inequality_" + std::to_string(i));
+  for (std::size_t i = 0; i < n_eq; ++i) header("scaled_equality_" + std::to_string(i));
+  for (const auto& m : metric_names) header(with_unit(m));
   out += '\n';
 
   std::unordered_map<std::string, std::size_t> metric_column;

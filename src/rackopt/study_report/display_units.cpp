@@ -11,30 +11,6 @@ namespace rackopt::study_report {
 // The report reads the study layer's results and settings throughout.
 using namespace rackopt::study;
 
-std::string unit_suffix(const std::string& unit) {
-  if (unit.empty() || unit == "-") return "";
-  std::string u = unit;
-  if (u.rfind("1/", 0) == 0) u = u.substr(1);
-  std::string out;
-  for (char c : u) {
-    if (c == '/') {
-      out += out.empty() ? "per_" : "_per_";
-    } else if (c == '*' || c == '.' || c == ' ') {
-      out += '_';
-    } else if (c == '^') {
-      continue;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-std::string with_suffix(const std::string& name, const std::string& unit) {
-  const std::string s = unit_suffix(unit);
-  return s.empty() ? name : name + "_" + s;
-}
-
 MetricUnit metric_unit(const std::string& label) {
   MetricUnit u;
   try {

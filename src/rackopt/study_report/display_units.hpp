@@ -14,14 +14,6 @@
 
 namespace rackopt::study_report {
 
-// A unit as a column-name suffix: "N/m" -> "N_per_m", "1/m" -> "per_m",
-// "m^2" -> "m2", "N*m" -> "N_m", "-" and "" -> "".
-std::string unit_suffix(const std::string& unit);
-
-// `name` with unit_suffix(unit) appended after "_", `name` alone when the
-// suffix is empty: "min_stiffness" + "N/m" -> "min_stiffness_N_per_m".
-std::string with_suffix(const std::string& name, const std::string& unit);
-
 struct MetricUnit {
   std::string si;       // "N/m", "-", "1/m"
   std::string display;  // "MN/m", "" (dimensionless), "1/m"

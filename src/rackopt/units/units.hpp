@@ -51,6 +51,14 @@ std::string_view default_unit(QuantityKind kind);
 // The SI unit values of `kind` are in: "m", "rad", "Pa", "N*m", "1/s", ...;
 // "" for dimensionless and count.
 std::string_view si_unit(QuantityKind kind);
+// A unit as a column-name suffix: "N/m" -> "N_per_m", "1/m" -> "per_m",
+// "m^2" -> "m2", "N*m" -> "N_m", "-" and "" -> "".
+std::string unit_suffix(const std::string& unit);
+
+// `name` with unit_suffix(unit) appended after "_", `name` alone when the
+// suffix is empty: "min_stiffness" + "N/m" -> "min_stiffness_N_per_m".
+std::string with_suffix(const std::string& name, const std::string& unit);
+
 // Canonical names of the units accepted for a kind, in a stable order
 // (first = default unit). Empty for dimensionless and count.
 std::vector<std::string> unit_names(QuantityKind kind);
