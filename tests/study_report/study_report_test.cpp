@@ -108,6 +108,21 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
   }
   expect_links_exist(dir);
   const std::string md = read_text(dir + "/report.md");
+  // The stiffness plot ends at the span with both hinges marked, and the
+  // report says below it why the curve is not symmetric.
+  const std::string gp = read_text(dir + "/stiffness.gp");
+  const auto stiff = read_csv(dir + "/stiffness.csv");
+  const double span = std::strtod(stiff.back()[0].c_str(), nullptr);
+  std::ostringstream range;
+  range.precision(17);
+  range << "set xrange [0:" << span << "]";
+  EXPECT_NE(gp.find(range.str()), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set label 'hinge'"), std::string::npos);
+  if (gnuplot_available()) {
+    EXPECT_NE(md.find("![Stiffness over one span](stiffness.png)"), std::string::npos) << md;
+    EXPECT_NE(md.find("not symmetric about mid-span"), std::string::npos);
+    EXPECT_NE(md.find("![Convergence](history.png)"), std::string::npos);
+  }
   EXPECT_NE(md.find("converged"), std::string::npos);
   EXPECT_NE(md.find("25 mm"), std::string::npos);
   EXPECT_NE(md.find("contact_ratio"), std::string::npos);

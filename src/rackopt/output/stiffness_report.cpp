@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <sstream>
 
 #include "rackopt/stiffness/iso_single_stiffness.hpp"
@@ -275,6 +276,17 @@ std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title,
   o << "set output '" << png_name << "'\n";
   o << "set multiplot layout 3,1 title " << gnuplot_quote(title) << "\n";
   o << "set grid\nset key outside right\n";
+  // The travel runs from one rack support to the next: the x range ends at
+  // the span, and both supports (hinges) are marked in every panel.
+  if (!c.samples.empty()) {
+    const double span = c.samples.back().travel;
+    o << std::setprecision(17) << "set xrange [0:" << span << "]\n";
+    for (double x : {0.0, span}) {
+      o << "set arrow from " << x << ", graph 0 to " << x << ", graph 1 nohead dt 2 lw 3 lc rgb '#555555' front\n";
+    }
+    o << "set label 'hinge' at first 0, graph 1 offset 0.5,-1 front\n";
+    o << "set label 'hinge' at first " << span << ", graph 1 right offset -0.5,-1 front\n";
+  }
   o << "set ylabel 'mesh stiffness [MN/m]'\nset logscale y\n";
   o << "plot '" << csv_name << "' using 1:($2/1e6) with lines lw 2 title 'coupled mesh', \\\n"
     << "     '' using 1:($3/1e6) with lines dt 2 title 'rigid rack body'\n";

@@ -1,5 +1,7 @@
 #include "rackopt/study_report/report_markdown.hpp"
 
+#include "rackopt/study_report/plot_captions.hpp"
+
 #include "rackopt/solvers/solver_backend.hpp"
 
 #include <cmath>
@@ -206,7 +208,9 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     if (fs::path(path).extension() != ".png" || !fs::exists(path)) continue;
     if (!any_plot) o << "## Plots\n\n";
     any_plot = true;
-    o << "![" << role << "](" << link_target(out_dir, path) << ")\n\n";
+    const PlotCaption c = plot_caption(role, spec);
+    o << "![" << md_cell(c.title) << "](" << link_target(out_dir, path) << ")\n\n";
+    if (!c.caption.empty()) o << "*" << md_cell(c.caption) << "*\n\n";
   }
   return o.str();
 }
