@@ -235,6 +235,7 @@ struct WearModel::Impl {
     if (!(drive.load.force > 0) || !std::isfinite(drive.load.force))
       bad("load.force", "wear needs a positive mesh force");
     if (!(opt.positions_per_point > 0)) bad("", "WearOptions.positions_per_point must be positive");
+    if (opt.compliance_intervals < 2) bad("", "WearOptions.compliance_intervals must be at least 2");
 
     warnings = geo.warnings;
     K = w.coefficient;
@@ -296,7 +297,7 @@ struct WearModel::Impl {
     Drive rigid = drive;
     rigid.effects.rack_span = RackSpanModel::kRigid;
     pair.emplace(rigid, geo);
-    const int n = 512;
+    const int n = opt.compliance_intervals;
     cp_lo = std::min(s_lo, s_start_nom);
     cp_ds = (s_end - cp_lo) / n;
     cp.resize(n + 1);
@@ -349,14 +350,15 @@ struct WearModel::Impl {
   // contact term with them only through that logarithm: it is kept at its
   // unworn value.
   void position_compliances(const double* c, int n, double clearance, double* out, double* cross) const {
-    std::array<double, 16> teeth{}, f{}, zero{};
+    std::array<double, 16> teeth{}, f{}, zero{}, found{};
     if (n > static_cast<int>(teeth.size())) throw std::runtime_error("wear: more than 16 pairs in mesh");
     for (int j = 0; j < n; ++j) {
       teeth[j] = teeth_compliance(c[j], clearance);
       out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
       cross[j] = 0;
-      if (coupled_pairs && j > 0) {
-        cross[j - 1] = adjacent_pair_coupling(foundations(c[j - 1], clearance), foundations(c[j], clearance), a0);
+      if (coupled_pairs) {
+        found[j] = foundations(c[j], clearance);
+        if (j > 0) cross[j - 1] = adjacent_pair_coupling(found[j - 1], found[j], a0);
       }
     }
     if (!pair->contact_depends_on_force() || n == 1) return;
@@ -931,20 +933,26 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   }
 
   // Snapshots at 25/50/75/100 % of the life.
+  // Each snapshot's depths start the next one's cell search (the cell is
+  // the same as a search from scratch: same depths, bit for bit); the last
+  // snapshot is the final state itself.
   const std::size_t W = 2 * static_cast<std::size_t>(N);
+  std::array<std::vector<double>, 2> hs{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
   for (double frac : {0.25, 0.5, 0.75, 1.0}) {
     const double nt = frac * n;
     std::size_t k = 0;
     while (k + 2 < hist_n.size() && hist_n[k + 1] < nt) ++k;
     const double span = hist_n[k + 1] - hist_n[k];
     const double t = span > 0 ? std::clamp((nt - hist_n[k]) / span, 0.0, 1.0) : 1.0;
-    std::array<std::vector<double>, 2> hs{std::vector<double>(N), std::vector<double>(N)};
-    for (int mb = 0; mb < 2; ++mb)
-      for (int i = 0; i < N; ++i) {
-        const double g0 = hist_g[k * W + mb * N + i], g1 = hist_g[(k + 1) * W + mb * N + i];
-        hs[mb][i] = G[mb].inverse(g0 + t * (g1 - g0));
-      }
-    if (frac == 1.0) hs = h;
+    if (frac == 1.0) {
+      hs = h;
+    } else {
+      for (int mb = 0; mb < 2; ++mb)
+        for (int i = 0; i < N; ++i) {
+          const double g0 = hist_g[k * W + mb * N + i], g1 = hist_g[(k + 1) * W + mb * N + i];
+          hs[mb][i] = G[mb].inverse_near(g0 + t * (g1 - g0), hs[mb][i]);
+        }
+    }
     WearSnapshot sn;
     sn.fraction = frac;
     sn.cycles = nt;

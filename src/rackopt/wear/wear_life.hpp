@@ -106,6 +106,11 @@ struct WearOptions {
   // it (true), or rebuild it for every life (false: the reference the tests
   // compare the reuse with, bit for bit).
   bool reuse_nominal_start = true;
+  // Intervals of the tooth compliance tables (pinion side against s, rack
+  // side against contact height), linear between nodes. Their construction
+  // is a fixed cost of every model, i.e. of every design of a study
+  // (docs/accuracy.md, "Compliance tables and mesh positions per point").
+  int compliance_intervals = 512;
 };
 
 class WearModel {
