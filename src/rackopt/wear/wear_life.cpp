@@ -235,6 +235,7 @@ struct WearModel::Impl {
     if (!(drive.load.force > 0) || !std::isfinite(drive.load.force))
       bad("load.force", "wear needs a positive mesh force");
     if (!(opt.positions_per_point > 0)) bad("", "WearOptions.positions_per_point must be positive");
+    if (!(opt.positions_cap > 0)) bad("", "WearOptions.positions_cap must be positive");
     if (opt.compliance_intervals < 2) bad("", "WearOptions.compliance_intervals must be at least 2");
 
     warnings = geo.warnings;
@@ -456,6 +457,11 @@ struct WearModel::Impl {
     }
   }
 
+  double positions_per_point() const {
+    const double n = drive.wear.profile_points;
+    return std::min(opt.positions_per_point, std::max(1.0, opt.positions_cap / n));
+  }
+
   // ---------------------------------------------------------------- path --
   Path make_path(double s_start, double eps, double clearance) const {
     Path p;
@@ -472,7 +478,7 @@ struct WearModel::Impl {
     int n = static_cast<int>(std::floor(eps + 1e-9));
     double frac = eps - n;
     if (frac < 1e-9) frac = 0;
-    const double dphi = p.ds / opt.positions_per_point;
+    const double dphi = p.ds / positions_per_point();
     struct Piece {
       double lo, hi;
       int pairs;

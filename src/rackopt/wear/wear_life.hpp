@@ -101,6 +101,15 @@ struct WearOptions {
   // Mesh positions sampled per unit of path length, relative to the profile
   // point spacing (2 = twice as fine as the profile points).
   double positions_per_point = 2.0;
+  // From this many profile points on, the mesh positions are no finer than
+  // the profile points (below it, positions_per_point applies, down to 1 per
+  // point at this count): the effective rate is
+  // min(positions_per_point, max(1, positions_cap / profile_points)). The
+  // band weights and the pair compliances cost in proportion to the
+  // positions, and at 240 points the finer positions change the ship lift's
+  // lives by < 1e-5 (docs/accuracy.md, "Compliance tables and mesh positions
+  // per point"). A huge cap keeps positions_per_point everywhere.
+  double positions_cap = 240;
   // Build the nominal path's start (path, unworn load sharing, band weights)
   // once per model and start every life without a sampled contact ratio from
   // it (true), or rebuild it for every life (false: the reference the tests
