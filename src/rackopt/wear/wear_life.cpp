@@ -346,28 +346,39 @@ struct WearModel::Impl {
   // stiffness/pair_coupling.hpp), the contact term at each pair's force
   // under the unworn load sharing (rigid rack body). A force-dependent
   // contact term makes that a fixed point: the term moves with ln(force),
-  // so each step shrinks the error by a small factor and a few steps from
-  // equal shares settle it. As the flanks wear the shares move, and the
-  // contact term with them only through that logarithm: it is kept at its
-  // unworn value.
-  void position_compliances(const double* c, int n, double clearance, double* out, double* cross) const {
-    std::array<double, 16> teeth{}, f{}, zero{}, found{};
+  // so each step shrinks the error by a small factor. It starts from `guess`
+  // (the shares extrapolated from the previous positions, which leaves one
+  // or two steps to converge) or, without one, from equal shares, and writes
+  // the converged shares to `shares`. Each pair's term is its contact law
+  // (PairCompliance::contact_law, as in the mesh model): one evaluation of
+  // the geometry, then one logarithm per step. As the flanks wear the shares
+  // move, and the contact term with them only through that logarithm: it is
+  // kept at its unworn value.
+  void position_compliances(const double* c, int n, double clearance, const double* guess, double* out,
+                            double* cross, double* shares) const {
+    std::array<double, 16> teeth{}, zero{}, found{};
+    std::array<ContactLaw, 16> law{};
     if (n > static_cast<int>(teeth.size())) throw std::runtime_error("wear: more than 16 pairs in mesh");
     for (int j = 0; j < n; ++j) {
       teeth[j] = teeth_compliance(c[j], clearance);
-      out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
+      law[j] = pair->contact_law(c[j], b, rack_height_at(c[j], clearance));
+      shares[j] = guess ? guess[j] : force / n;
+      out[j] = teeth[j] + law[j].at(shares[j]);
       cross[j] = 0;
       if (coupled_pairs) {
         found[j] = foundations(c[j], clearance);
         if (j > 0) cross[j - 1] = adjacent_pair_coupling(found[j - 1], found[j], a0);
       }
     }
-    if (!pair->contact_depends_on_force() || n == 1) return;
+    if (!pair->contact_depends_on_force() || n == 1) {
+      if (n == 1) shares[0] = force;
+      return;
+    }
     for (int it = 0; it < 8; ++it) {
-      share_loads(out, cross, zero.data(), n, force, f.data());
+      share_loads(out, cross, zero.data(), n, force, shares);
       double change = 0;
       for (int j = 0; j < n; ++j) {
-        const double cj = teeth[j] + pair->contact(c[j], f[j], b, rack_height_at(c[j], clearance));
+        const double cj = teeth[j] + law[j].at(shares[j]);
         change = std::max(change, std::abs(cj - out[j]) / cj);
         out[j] = cj;
       }
@@ -487,6 +498,10 @@ struct WearModel::Impl {
     if (frac > 0) pieces.push_back({0.0, frac * pb, n + 1});
     pieces.push_back({frac * pb, pb, n});
     p.pos_begin.push_back(0);
+    // The unworn shares of the two previous positions of a piece (the same
+    // pairs, moved on by one step), extrapolated linearly as the start of
+    // the next position's fixed point.
+    std::array<double, 16> shares{}, prev{}, prev2{}, guess{};
     for (const Piece& pc : pieces) {
       const int m = std::max(2, static_cast<int>(std::ceil((pc.hi - pc.lo) / dphi)) + 1);
       const int first_pos = static_cast<int>(p.pos_begin.size()) - 1;
@@ -501,7 +516,15 @@ struct WearModel::Impl {
         p.node_comp.resize(p.node_c.size());
         p.node_cross.resize(p.node_c.size());
         const int a = p.pos_begin.back();
-        position_compliances(&p.node_c[a], pc.pairs, clearance, &p.node_comp[a], &p.node_cross[a]);
+        const int np = std::min(pc.pairs, static_cast<int>(guess.size()));
+        for (int j = 0; j < np; ++j) {
+          const double g = k >= 2 ? 2 * prev[j] - prev2[j] : prev[j];
+          guess[j] = g > 0 ? g : prev[j];
+        }
+        position_compliances(&p.node_c[a], pc.pairs, clearance, k >= 1 ? guess.data() : nullptr, &p.node_comp[a],
+                             &p.node_cross[a], shares.data());
+        prev2 = prev;
+        prev = shares;
         p.pos_begin.push_back(static_cast<int>(p.node_c.size()));
       }
       for (int j = 0; j < pc.pairs; ++j) {
