@@ -375,7 +375,7 @@ void wear_tables(const std::string& file) {
 
 // -------------------------------------------------- wear model resolution
 // What the resolution knobs of one wear model (WearOptions: mesh positions
-// per profile point, compliance-table intervals) change in a study design's
+// per profile point, compliance-table intervals, hardness-integral cells) change in a study design's
 // wear metrics, against the defaults, and what the design's wear model then
 // costs (docs/accuracy.md, "Compliance tables and mesh positions per point").
 // The reference is the finest setting of before the cap (WearOptions). The lives are those of the `wear_life` and `wear_life_at_R` metrics on the
@@ -463,9 +463,11 @@ void wear_resolution_table(const std::string& study_file, const ResolutionCase& 
 void wear_resolution_tables() {
   // The reference: every knob at its finest default of before (2 positions
   // per point whatever the points, 512 table intervals).
-  ResolutionCase fine{"positions_per_point 2, no cap, 512 intervals", {}};
+  ResolutionCase fine{"positions_per_point 2, no cap, 512 intervals, 4096 hardness cells", {}};
   fine.options.positions_cap = 1e9;
-  std::vector<ResolutionCase> cases{{"default (positions_cap 240, 512 intervals)", {}}};
+  fine.options.compliance_intervals = 512;
+  fine.options.hardness_cells = 4096;
+  std::vector<ResolutionCase> cases{{"default (positions_cap 240, 256 intervals, 2048 hardness cells)", {}}};
   for (double ppp : {1.5, 1.0, 0.5}) {
     rackopt::WearOptions o = fine.options;
     o.positions_per_point = ppp;
@@ -477,6 +479,11 @@ void wear_resolution_tables() {
     rackopt::WearOptions o = fine.options;
     o.compliance_intervals = n;
     cases.push_back({"compliance_intervals " + std::to_string(n), o});
+  }
+  for (int n : {2048, 1024, 512}) {
+    rackopt::WearOptions o = fine.options;
+    o.hardness_cells = n;
+    cases.push_back({"hardness_cells " + std::to_string(n), o});
   }
   for (const char* f : {"ship_lift_wear_tradeoff.yaml", "gantry_sizing.yaml"})
     wear_resolution_table(std::string(RACKOPT_SOURCE_DIR) + "/studies/" + f, fine, cases);

@@ -30,11 +30,11 @@ constexpr int kRack = 1;
 // exact nodes on [0, D]. G is then piecewise quadratic and is inverted exactly
 // cell by cell. Archard with frozen load, dh/dn = K q / H(h), integrates to
 // G(h1) - G(h0) = K q dn exactly for any hardness profile (up to the
-// piecewise-linear H, 4096 cells over the wear depth).
+// piecewise-linear H, WearOptions::hardness_cells cells over the wear depth).
 class HardnessIntegral {
  public:
   HardnessIntegral() = default;
-  HardnessIntegral(const HardnessModel& model, double depth_max, int cells = 4096)
+  HardnessIntegral(const HardnessModel& model, double depth_max, int cells)
       : D_(depth_max), dh_(depth_max / cells), H_(cells + 1), G_(cells + 1) {
     for (int k = 0; k <= cells; ++k) H_[k] = model(k * dh_);
     G_[0] = 0;
@@ -236,6 +236,7 @@ struct WearModel::Impl {
       bad("load.force", "wear needs a positive mesh force");
     if (!(opt.positions_per_point > 0)) bad("", "WearOptions.positions_per_point must be positive");
     if (!(opt.positions_cap > 0)) bad("", "WearOptions.positions_cap must be positive");
+    if (opt.hardness_cells < 1) bad("", "WearOptions.hardness_cells must be at least 1");
     if (opt.compliance_intervals < 2) bad("", "WearOptions.compliance_intervals must be at least 2");
 
     warnings = geo.warnings;
@@ -282,7 +283,7 @@ struct WearModel::Impl {
         limit[mb] = cd;
         limit_is_case[mb] = true;
       }
-      G[mb] = HardnessIntegral(hardness[mb], limit[mb]);
+      G[mb] = HardnessIntegral(hardness[mb], limit[mb], opt.hardness_cells);
     }
   }
 
