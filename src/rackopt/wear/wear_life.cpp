@@ -752,10 +752,10 @@ struct WearModel::Impl {
     if (s.contact_ratio && !std::isfinite(*s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
   }
 
-  WearLifeResult life(const WearSample& smp) const;
+  WearLifeResult life(const WearSample& smp, bool snapshots) const;
 };
 
-WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
+WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) const {
   const auto t0 = std::chrono::steady_clock::now();
   check_sample(smp);
   WearLifeResult res;
@@ -778,7 +778,8 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     const std::vector<double> zero(p.N, 0.0);
     res.pinion = profile(p, kPinion, zero);
     res.rack = profile(p, kRack, zero);
-    for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
+    if (snapshots)
+      for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;
   }
@@ -809,11 +810,13 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   std::vector<double> hist_n{0.0}, hist_eps{eps0};
   std::vector<double> hist_g;
   auto push_hist = [&](double n, double e) {
+    if (!snapshots) return;
     hist_n.push_back(n);
     hist_eps.push_back(e);
     for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
   };
-  for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
+  if (snapshots)
+    for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
 
   std::array<std::vector<double>, 2> q, rate, g_prev;
   double n = 0, eps = eps0;
@@ -962,13 +965,13 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     res.reason = o.str();
   }
 
-  // Snapshots at 25/50/75/100 % of the life.
+  // Snapshots at 25/50/75/100 % of the life (none when not asked for).
   // Each snapshot's depths start the next one's cell search (the cell is
   // the same as a search from scratch: same depths, bit for bit); the last
   // snapshot is the final state itself.
   const std::size_t W = 2 * static_cast<std::size_t>(N);
   std::array<std::vector<double>, 2> hs{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
-  for (double frac : {0.25, 0.5, 0.75, 1.0}) {
+  for (double frac : snapshots ? std::vector<double>{0.25, 0.5, 0.75, 1.0} : std::vector<double>{}) {
     const double nt = frac * n;
     std::size_t k = 0;
     while (k + 2 < hist_n.size() && hist_n[k + 1] < nt) ++k;
@@ -1029,7 +1032,10 @@ WearModel::~WearModel() = default;
 WearModel::WearModel(WearModel&&) noexcept = default;
 WearModel& WearModel::operator=(WearModel&&) noexcept = default;
 
-WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample); }
+WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample, true); }
+WearLifeResult WearModel::life(const WearSample& sample, Detail detail) const {
+  return impl_->life(sample, detail == Detail::kFull);
+}
 
 WearModel::PassWear WearModel::initial_wear_per_pass(const WearSample& smp) const {
   const Impl& m = *impl_;

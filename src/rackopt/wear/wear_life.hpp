@@ -145,6 +145,12 @@ class WearModel {
   // non-finite scale or a non-finite contact ratio; every other outcome is a
   // finite result (contact ratio out of range: life 0 with the reason).
   WearLifeResult life(const WearSample& sample = {}) const;
+  // What a life fills in: everything, or everything but the snapshots
+  // (empty), for callers that read only the life and its criterion (the
+  // reliability's table, quantile and sample lives). The other fields are
+  // the same bits either way.
+  enum class Detail { kFull, kNoSnapshots };
+  WearLifeResult life(const WearSample& sample, Detail detail) const;
 
   // Wear per pass of the unworn flanks [m per own pass] along both profiles
   // (depth field), for plots and checks.
