@@ -102,8 +102,9 @@ struct WearOptions {
   // point spacing (2 = twice as fine as the profile points).
   double positions_per_point = 2.0;
   // From this many profile points on, the mesh positions are no finer than
-  // the profile points (below it, positions_per_point applies, down to 1 per
-  // point at this count): the effective rate is
+  // the profile points; below it there are at most this many positions over
+  // the path, and never more than positions_per_point per point (so 120 and
+  // fewer points keep 2): the effective rate is
   // min(positions_per_point, max(1, positions_cap / profile_points)). The
   // band weights and the pair compliances cost in proportion to the
   // positions, and at 240 points the finer positions change the ship lift's
