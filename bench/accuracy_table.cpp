@@ -8,6 +8,9 @@
 //   ./build/accuracy_table problem.yaml ...        the same (stiffness only)
 //   ./build/accuracy_table wear [problem.yaml]     wear only (default: problems/ship_lift.yaml;
 //                                                  the cases are chosen for that drive, ~1-2 min)
+//   ./build/accuracy_table wear_resolution         wear model resolution (positions per point,
+//                                                  compliance-table intervals) on the start
+//                                                  designs of the ship-lift and gantry studies
 //   ./build/accuracy_table study                   optimizers on studies/rack_railway_sizing.yaml
 //                                                  (quality vs budget, forward vs central FD; ~2-3 min)
 //   ./build/accuracy_table metric_sampling         the metrics' positions per period
@@ -29,6 +32,7 @@
 //  * samples and reliability.sampling (pseudo / Sobol) of the life at R, against
 //    the exact quantile map of the single random input (result.exact).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,6 +46,8 @@
 #include <gsl/gsl_errno.h>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/wear_reliability/design_scatter.hpp"
+#include "rackopt/wear_reliability/sample_domain.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
@@ -370,6 +376,122 @@ void wear_tables(const std::string& file) {
   }
 }
 
+// -------------------------------------------------- wear model resolution
+// What the resolution knobs of one wear model (WearOptions: mesh positions
+// per profile point, compliance-table intervals, hardness-integral cells) change in a study design's
+// wear metrics, against the defaults, and what the design's wear model then
+// costs (docs/accuracy.md, "Compliance tables and mesh positions per point").
+// The reference is the finest setting of before the cap (WearOptions). The lives are those of the `wear_life` and `wear_life_at_R` metrics on the
+// exact quantile path: the nominal life, and the life at the random input's
+// quantile for each R of the study (found with the default model; the other
+// settings are evaluated at the same input value).
+
+struct ResolutionCase {
+  std::string label;
+  rackopt::WearOptions options;
+};
+
+void wear_resolution_table(const std::string& study_file, const ResolutionCase& fine,
+                           const std::vector<ResolutionCase>& cases) {
+  const rackopt::study::StudySpec spec = rackopt::studyfile::load_study_file(study_file);
+  const rackopt::study::StudyProblem problem(spec);
+  const Drive d = problem.drive_at(problem.start_design());
+  if (d.reliability.inputs.size() != 1) throw std::runtime_error(study_file + ": one random input expected");
+  const rackopt::RandomInput& in = d.reliability.inputs.front();
+  const rackopt::WearModel reference(d, fine.options);
+  const rackopt::statistics::Distribution dist =
+      rackopt::input_distribution(in, rackopt::design_value(d, in.key, reference.nominal_contact_ratio()));
+  double qa = 0, qb = 1;
+  if (in.key == "contact_ratio") {
+    qa = dist.cdf(std::max(1.0, d.wear.min_contact_ratio));
+    qb = std::max(qa, dist.cdf(reference.max_contact_ratio()));
+  } else if (rackopt::input_must_be_positive(in.key)) {
+    qa = dist.cdf(0.0);
+  }
+  const double valid = 1.0 - (rackopt::input_must_be_positive(in.key) ? qa : 0.0);
+  // The life at R is the smaller of the lives at the two candidate
+  // quantiles (rising or falling life), as the exact path decides it.
+  std::vector<double> inputs_at_R;
+  const std::array<double, 2> probes{dist.quantile(qb - 0.9 * valid), dist.quantile(qa + 0.9 * valid)};
+  for (double R : {0.5, 0.9, 0.99}) {
+    const double x_rise = dist.quantile(qb - R * valid), x_fall = dist.quantile(qa + R * valid);
+    const double l_rise = reference.life(rackopt::wear_sample_for(d, {in}, {x_rise})).life_years;
+    const double l_fall = reference.life(rackopt::wear_sample_for(d, {in}, {x_fall})).life_years;
+    inputs_at_R.push_back(l_rise <= l_fall ? x_rise : x_fall);
+  }
+  auto lives = [&](const rackopt::WearModel& m) {
+    std::vector<double> out{m.life().life_years};
+    for (double x : inputs_at_R) out.push_back(m.life(rackopt::wear_sample_for(d, {in}, {x})).life_years);
+    return out;
+  };
+  // What one design of the study spends in the wear model: construction,
+  // the nominal life and the two lives of the exact path.
+  auto design_ms = [&](const rackopt::WearOptions& o) {
+    std::vector<double> t;
+    for (int rep = 0; rep < 15; ++rep) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const rackopt::WearModel m(d, o);
+      double sink = m.life().life_years;
+      for (double x : probes) sink += m.life(rackopt::wear_sample_for(d, {in}, {x})).life_years;
+      t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      if (!std::isfinite(sink)) std::printf("(non-finite life)\n");
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+  };
+  const std::vector<double> ref = lives(reference);
+  std::printf("%s, start design (profile_points %d, update_profile %s; random input %s; R = 0.5 / 0.9 / 0.99 at "
+              "%s = %.6g / %.6g / %.6g):\n\n",
+              spec.name.c_str(), d.wear.profile_points, d.wear.update_profile ? "on" : "off", in.key.c_str(),
+              in.key.c_str(), inputs_at_R[0], inputs_at_R[1], inputs_at_R[2]);
+  std::printf("| setting | nominal life error | life at R = 0.5 error | life at R = 0.9 error | life at R = 0.99 error "
+              "| largest | ms per design (model + 3 lives) |\n|---|---|---|---|---|---|---|\n");
+  std::printf("| %s (reference): %.6f / %.6f / %.6f / %.6f y | – | – | – | – | – | %.3f |\n", fine.label.c_str(),
+              ref[0], ref[1], ref[2], ref[3], design_ms(fine.options));
+  for (const ResolutionCase& c : cases) {
+    const rackopt::WearModel m(d, c.options);
+    const std::vector<double> v = lives(m);
+    double worst = 0;
+    std::printf("| %s |", c.label.c_str());
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double e = (v[k] - ref[k]) / ref[k];
+      worst = std::max(worst, std::abs(e));
+      std::printf(" %+.1e |", e);
+    }
+    std::printf(" %.1e | %.3f |\n", worst, design_ms(c.options));
+  }
+  std::printf("\n");
+}
+
+void wear_resolution_tables() {
+  // The reference: every knob at its finest default of before (2 positions
+  // per point whatever the points, 512 table intervals).
+  ResolutionCase fine{"positions_per_point 2, no cap, 512 intervals, 4096 hardness cells", {}};
+  fine.options.positions_cap = 1e9;
+  fine.options.compliance_intervals = 512;
+  fine.options.hardness_cells = 4096;
+  std::vector<ResolutionCase> cases{{"default (positions_cap 240, 256 intervals, 2048 hardness cells)", {}}};
+  for (double ppp : {1.5, 1.0, 0.5}) {
+    rackopt::WearOptions o = fine.options;
+    o.positions_per_point = ppp;
+    char label[64];
+    std::snprintf(label, sizeof label, "positions_per_point %g", ppp);
+    cases.push_back({label, o});
+  }
+  for (int n : {256, 128, 64, 32, 16}) {
+    rackopt::WearOptions o = fine.options;
+    o.compliance_intervals = n;
+    cases.push_back({"compliance_intervals " + std::to_string(n), o});
+  }
+  for (int n : {2048, 1024, 512}) {
+    rackopt::WearOptions o = fine.options;
+    o.hardness_cells = n;
+    cases.push_back({"hardness_cells " + std::to_string(n), o});
+  }
+  for (const char* f : {"ship_lift_wear_tradeoff.yaml", "gantry_sizing.yaml"})
+    wear_resolution_table(std::string(RACKOPT_SOURCE_DIR) + "/studies/" + f, fine, cases);
+}
+
 // ---------------------------------------------------------------- studies
 // Solution quality against evaluations and time on
 // studies/rack_railway_sizing.yaml (docs/accuracy.md, "Studies"). Each run
@@ -662,6 +784,15 @@ int main(int argc, char** argv) {
   // given are stiffness problems, and no arguments at all runs both parts.
   std::vector<std::string> args(argv + 1, argv + argc);
   bool run_stiffness = true, run_wear = args.empty();
+  if (!args.empty() && args[0] == "wear_resolution") {
+    try {
+      wear_resolution_tables();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
   if (!args.empty() && args[0] == "study") {
     if (args.size() > 1) {
       std::fprintf(stderr, "usage: accuracy_table study\n");

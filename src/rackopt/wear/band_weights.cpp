@@ -8,11 +8,14 @@ namespace rackopt {
 namespace {
 
 // Semicircle (elliptic pressure) weight integrals on [-1, 1]:
-// F0' = sqrt(1-u^2), F1' = u sqrt(1-u^2).
-double F0(double u) { return 0.5 * (u * std::sqrt(std::max(1.0 - u * u, 0.0)) + std::asin(u)); }
-double F1(double u) {
+// F0' = sqrt(1-u^2), F1' = u sqrt(1-u^2). Both at once: they share the root.
+struct Primitives {
+  double f0, f1;
+};
+Primitives F01(double u) {
   const double q = std::max(1.0 - u * u, 0.0);
-  return -q * std::sqrt(q) / 3.0;
+  const double r = std::sqrt(q);
+  return {0.5 * (u * r + std::asin(u)), -q * r / 3.0};
 }
 
 // The first segment k in [0, segments) for which `before(k)` is false, when
@@ -84,10 +87,12 @@ void band_weights(const std::vector<double>& node_c, const LoadIntervals& interv
       if (ua >= 1) break;  // this and every later segment lie above the band
       if (!(ub > ua) || ub <= -1) continue;
       const double u1 = std::max(ua, -1.0), u2 = std::min(ub, 1.0);
-      const double f0a = u1 == prev_u ? prev_f0 : F0(u1), f1a = u1 == prev_u ? prev_f1 : F1(u1);
+      const Primitives fa = u1 == prev_u ? Primitives{prev_f0, prev_f1} : F01(u1);
+      const double f0a = fa.f0, f1a = fa.f1;
+      const Primitives fb = F01(u2);
       prev_u = u2;
-      prev_f0 = F0(u2);
-      prev_f1 = F1(u2);
+      prev_f0 = fb.f0;
+      prev_f1 = fb.f1;
       const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
       const double du = ub - ua;
       // The lower node is usually the previous segment's upper node: merge.

@@ -30,11 +30,11 @@ constexpr int kRack = 1;
 // exact nodes on [0, D]. G is then piecewise quadratic and is inverted exactly
 // cell by cell. Archard with frozen load, dh/dn = K q / H(h), integrates to
 // G(h1) - G(h0) = K q dn exactly for any hardness profile (up to the
-// piecewise-linear H, 4096 cells over the wear depth).
+// piecewise-linear H, WearOptions::hardness_cells cells over the wear depth).
 class HardnessIntegral {
  public:
   HardnessIntegral() = default;
-  HardnessIntegral(const HardnessModel& model, double depth_max, int cells = 4096)
+  HardnessIntegral(const HardnessModel& model, double depth_max, int cells)
       : D_(depth_max), dh_(depth_max / cells), H_(cells + 1), G_(cells + 1) {
     for (int k = 0; k <= cells; ++k) H_[k] = model(k * dh_);
     G_[0] = 0;
@@ -235,6 +235,9 @@ struct WearModel::Impl {
     if (!(drive.load.force > 0) || !std::isfinite(drive.load.force))
       bad("load.force", "wear needs a positive mesh force");
     if (!(opt.positions_per_point > 0)) bad("", "WearOptions.positions_per_point must be positive");
+    if (!(opt.positions_cap > 0)) bad("", "WearOptions.positions_cap must be positive");
+    if (opt.hardness_cells < 1) bad("", "WearOptions.hardness_cells must be at least 1");
+    if (opt.compliance_intervals < 2) bad("", "WearOptions.compliance_intervals must be at least 2");
 
     warnings = geo.warnings;
     K = w.coefficient;
@@ -280,7 +283,7 @@ struct WearModel::Impl {
         limit[mb] = cd;
         limit_is_case[mb] = true;
       }
-      G[mb] = HardnessIntegral(hardness[mb], limit[mb]);
+      G[mb] = HardnessIntegral(hardness[mb], limit[mb], opt.hardness_cells);
     }
   }
 
@@ -296,7 +299,7 @@ struct WearModel::Impl {
     Drive rigid = drive;
     rigid.effects.rack_span = RackSpanModel::kRigid;
     pair.emplace(rigid, geo);
-    const int n = 512;
+    const int n = opt.compliance_intervals;
     cp_lo = std::min(s_lo, s_start_nom);
     cp_ds = (s_end - cp_lo) / n;
     cp.resize(n + 1);
@@ -344,27 +347,39 @@ struct WearModel::Impl {
   // stiffness/pair_coupling.hpp), the contact term at each pair's force
   // under the unworn load sharing (rigid rack body). A force-dependent
   // contact term makes that a fixed point: the term moves with ln(force),
-  // so each step shrinks the error by a small factor and a few steps from
-  // equal shares settle it. As the flanks wear the shares move, and the
-  // contact term with them only through that logarithm: it is kept at its
-  // unworn value.
-  void position_compliances(const double* c, int n, double clearance, double* out, double* cross) const {
-    std::array<double, 16> teeth{}, f{}, zero{};
+  // so each step shrinks the error by a small factor. It starts from `guess`
+  // (the shares extrapolated from the previous positions, which leaves one
+  // or two steps to converge) or, without one, from equal shares, and writes
+  // the converged shares to `shares`. Each pair's term is its contact law
+  // (PairCompliance::contact_law, as in the mesh model): one evaluation of
+  // the geometry, then one logarithm per step. As the flanks wear the shares
+  // move, and the contact term with them only through that logarithm: it is
+  // kept at its unworn value.
+  void position_compliances(const double* c, int n, double clearance, const double* guess, double* out,
+                            double* cross, double* shares) const {
+    std::array<double, 16> teeth{}, zero{}, found{};
+    std::array<ContactLaw, 16> law{};
     if (n > static_cast<int>(teeth.size())) throw std::runtime_error("wear: more than 16 pairs in mesh");
     for (int j = 0; j < n; ++j) {
       teeth[j] = teeth_compliance(c[j], clearance);
-      out[j] = teeth[j] + pair->contact(c[j], force / n, b, rack_height_at(c[j], clearance));
+      law[j] = pair->contact_law(c[j], b, rack_height_at(c[j], clearance));
+      shares[j] = guess ? guess[j] : force / n;
+      out[j] = teeth[j] + law[j].at(shares[j]);
       cross[j] = 0;
-      if (coupled_pairs && j > 0) {
-        cross[j - 1] = adjacent_pair_coupling(foundations(c[j - 1], clearance), foundations(c[j], clearance), a0);
+      if (coupled_pairs) {
+        found[j] = foundations(c[j], clearance);
+        if (j > 0) cross[j - 1] = adjacent_pair_coupling(found[j - 1], found[j], a0);
       }
     }
-    if (!pair->contact_depends_on_force() || n == 1) return;
+    if (!pair->contact_depends_on_force() || n == 1) {
+      if (n == 1) shares[0] = force;
+      return;
+    }
     for (int it = 0; it < 8; ++it) {
-      share_loads(out, cross, zero.data(), n, force, f.data());
+      share_loads(out, cross, zero.data(), n, force, shares);
       double change = 0;
       for (int j = 0; j < n; ++j) {
-        const double cj = teeth[j] + pair->contact(c[j], f[j], b, rack_height_at(c[j], clearance));
+        const double cj = teeth[j] + law[j].at(shares[j]);
         change = std::max(change, std::abs(cj - out[j]) / cj);
         out[j] = cj;
       }
@@ -454,6 +469,11 @@ struct WearModel::Impl {
     }
   }
 
+  double positions_per_point() const {
+    const double n = drive.wear.profile_points;
+    return std::min(opt.positions_per_point, std::max(1.0, opt.positions_cap / n));
+  }
+
   // ---------------------------------------------------------------- path --
   Path make_path(double s_start, double eps, double clearance) const {
     Path p;
@@ -470,7 +490,7 @@ struct WearModel::Impl {
     int n = static_cast<int>(std::floor(eps + 1e-9));
     double frac = eps - n;
     if (frac < 1e-9) frac = 0;
-    const double dphi = p.ds / opt.positions_per_point;
+    const double dphi = p.ds / positions_per_point();
     struct Piece {
       double lo, hi;
       int pairs;
@@ -479,6 +499,10 @@ struct WearModel::Impl {
     if (frac > 0) pieces.push_back({0.0, frac * pb, n + 1});
     pieces.push_back({frac * pb, pb, n});
     p.pos_begin.push_back(0);
+    // The unworn shares of the two previous positions of a piece (the same
+    // pairs, moved on by one step), extrapolated linearly as the start of
+    // the next position's fixed point.
+    std::array<double, 16> shares{}, prev{}, prev2{}, guess{};
     for (const Piece& pc : pieces) {
       const int m = std::max(2, static_cast<int>(std::ceil((pc.hi - pc.lo) / dphi)) + 1);
       const int first_pos = static_cast<int>(p.pos_begin.size()) - 1;
@@ -493,7 +517,15 @@ struct WearModel::Impl {
         p.node_comp.resize(p.node_c.size());
         p.node_cross.resize(p.node_c.size());
         const int a = p.pos_begin.back();
-        position_compliances(&p.node_c[a], pc.pairs, clearance, &p.node_comp[a], &p.node_cross[a]);
+        const int np = std::min(pc.pairs, static_cast<int>(guess.size()));
+        for (int j = 0; j < np; ++j) {
+          const double g = k >= 2 ? 2 * prev[j] - prev2[j] : prev[j];
+          guess[j] = g > 0 ? g : prev[j];
+        }
+        position_compliances(&p.node_c[a], pc.pairs, clearance, k >= 1 ? guess.data() : nullptr, &p.node_comp[a],
+                             &p.node_cross[a], shares.data());
+        prev2 = prev;
+        prev = shares;
         p.pos_begin.push_back(static_cast<int>(p.node_c.size()));
       }
       for (int j = 0; j < pc.pairs; ++j) {
@@ -720,10 +752,10 @@ struct WearModel::Impl {
     if (s.contact_ratio && !std::isfinite(*s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
   }
 
-  WearLifeResult life(const WearSample& smp) const;
+  WearLifeResult life(const WearSample& smp, bool snapshots) const;
 };
 
-WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
+WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) const {
   const auto t0 = std::chrono::steady_clock::now();
   check_sample(smp);
   WearLifeResult res;
@@ -746,7 +778,8 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     const std::vector<double> zero(p.N, 0.0);
     res.pinion = profile(p, kPinion, zero);
     res.rack = profile(p, kRack, zero);
-    for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
+    if (snapshots)
+      for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;
   }
@@ -777,11 +810,13 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
   std::vector<double> hist_n{0.0}, hist_eps{eps0};
   std::vector<double> hist_g;
   auto push_hist = [&](double n, double e) {
+    if (!snapshots) return;
     hist_n.push_back(n);
     hist_eps.push_back(e);
     for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
   };
-  for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
+  if (snapshots)
+    for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
 
   std::array<std::vector<double>, 2> q, rate, g_prev;
   double n = 0, eps = eps0;
@@ -930,21 +965,27 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp) const {
     res.reason = o.str();
   }
 
-  // Snapshots at 25/50/75/100 % of the life.
+  // Snapshots at 25/50/75/100 % of the life (none when not asked for).
+  // Each snapshot's depths start the next one's cell search (the cell is
+  // the same as a search from scratch: same depths, bit for bit); the last
+  // snapshot is the final state itself.
   const std::size_t W = 2 * static_cast<std::size_t>(N);
-  for (double frac : {0.25, 0.5, 0.75, 1.0}) {
+  std::array<std::vector<double>, 2> hs{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
+  for (double frac : snapshots ? std::vector<double>{0.25, 0.5, 0.75, 1.0} : std::vector<double>{}) {
     const double nt = frac * n;
     std::size_t k = 0;
     while (k + 2 < hist_n.size() && hist_n[k + 1] < nt) ++k;
     const double span = hist_n[k + 1] - hist_n[k];
     const double t = span > 0 ? std::clamp((nt - hist_n[k]) / span, 0.0, 1.0) : 1.0;
-    std::array<std::vector<double>, 2> hs{std::vector<double>(N), std::vector<double>(N)};
-    for (int mb = 0; mb < 2; ++mb)
-      for (int i = 0; i < N; ++i) {
-        const double g0 = hist_g[k * W + mb * N + i], g1 = hist_g[(k + 1) * W + mb * N + i];
-        hs[mb][i] = G[mb].inverse(g0 + t * (g1 - g0));
-      }
-    if (frac == 1.0) hs = h;
+    if (frac == 1.0) {
+      hs = h;
+    } else {
+      for (int mb = 0; mb < 2; ++mb)
+        for (int i = 0; i < N; ++i) {
+          const double g0 = hist_g[k * W + mb * N + i], g1 = hist_g[(k + 1) * W + mb * N + i];
+          hs[mb][i] = G[mb].inverse_near(g0 + t * (g1 - g0), hs[mb][i]);
+        }
+    }
     WearSnapshot sn;
     sn.fraction = frac;
     sn.cycles = nt;
@@ -991,7 +1032,10 @@ WearModel::~WearModel() = default;
 WearModel::WearModel(WearModel&&) noexcept = default;
 WearModel& WearModel::operator=(WearModel&&) noexcept = default;
 
-WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample); }
+WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample, true); }
+WearLifeResult WearModel::life(const WearSample& sample, Detail detail) const {
+  return impl_->life(sample, detail == Detail::kFull);
+}
 
 WearModel::PassWear WearModel::initial_wear_per_pass(const WearSample& smp) const {
   const Impl& m = *impl_;

@@ -101,11 +101,31 @@ struct WearOptions {
   // Mesh positions sampled per unit of path length, relative to the profile
   // point spacing (2 = twice as fine as the profile points).
   double positions_per_point = 2.0;
+  // From this many profile points on, the mesh positions are no finer than
+  // the profile points; below it there are at most this many positions over
+  // the path, and never more than positions_per_point per point (so 120 and
+  // fewer points keep 2): the effective rate is
+  // min(positions_per_point, max(1, positions_cap / profile_points)). The
+  // band weights and the pair compliances cost in proportion to the
+  // positions, and at 240 points the finer positions change the ship lift's
+  // lives by < 1e-5 (docs/accuracy.md, "Compliance tables and mesh positions
+  // per point"). A huge cap keeps positions_per_point everywhere.
+  double positions_cap = 240;
   // Build the nominal path's start (path, unworn load sharing, band weights)
   // once per model and start every life without a sampled contact ratio from
   // it (true), or rebuild it for every life (false: the reference the tests
   // compare the reuse with, bit for bit).
   bool reuse_nominal_start = true;
+  // Intervals of the tooth compliance tables (pinion side against s, rack
+  // side against contact height), linear between nodes. Their construction
+  // is a fixed cost of every model, i.e. of every design of a study
+  // (docs/accuracy.md, "Compliance tables and mesh positions per point").
+  int compliance_intervals = 256;
+  // Cells of each member's hardness integral G(h) = integral of H over
+  // [0, limit depth] (H linear in each cell, G inverted exactly per cell).
+  // Tabulating H is a fixed cost of every model; the integral's relative
+  // error is about H'' dh^2 / (12 H), below 1e-9 for the shipped profiles.
+  int hardness_cells = 2048;
 };
 
 class WearModel {
@@ -126,6 +146,12 @@ class WearModel {
   // non-finite scale or a non-finite contact ratio; every other outcome is a
   // finite result (contact ratio out of range: life 0 with the reason).
   WearLifeResult life(const WearSample& sample = {}) const;
+  // What a life fills in: everything, or everything but the snapshots
+  // (empty), for callers that read only the life and its criterion (the
+  // reliability's table, quantile and sample lives). The other fields are
+  // the same bits either way.
+  enum class Detail { kFull, kNoSnapshots };
+  WearLifeResult life(const WearSample& sample, Detail detail) const;
 
   // Wear per pass of the unworn flanks [m per own pass] along both profiles
   // (depth field), for plots and checks.

@@ -222,7 +222,10 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   out.samples_used = static_cast<long>(n);
   out.criteria.assign(n, std::string());
 
-  auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x})); };
+  // Every life below but the nominal one is read for its years and
+  // criterion only: no snapshots.
+  constexpr WearModel::Detail kLifeOnly = WearModel::Detail::kNoSnapshots;
+  auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x}), kLifeOnly); };
 
 
   // Several inputs of which at most one shapes the life (the contact ratio
@@ -239,7 +242,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   const bool scaled_nominal = scaled && shaping == 0;
   const InputBounds tb = dim == 1 ? one : bounds_of(ti);
   const std::vector<RandomInput> table_inputs{inputs[ti]};
-  auto table_life = [&](double x) { return model.life(wear_sample_for(drive, table_inputs, {x})); };
+  auto table_life = [&](double x) { return model.life(wear_sample_for(drive, table_inputs, {x}), kLifeOnly); };
 
   // The life table (one input, or the one shaping input): nodes over the
   // [1e-9, 1 - 1e-9] quantiles of the input (clipped to [xa, xb]), so that it
@@ -319,7 +322,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       out.criteria[i] = out.nominal.criterion;
       interpolated.fetch_add(1, std::memory_order_relaxed);
     } else {
-      const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]));
+      const WearLifeResult r = model.life(wear_sample_for(drive, inputs, out.input_values[i]), kLifeOnly);
       out.criteria[i] = r.criterion;
       years = r.life_years;
     }
