@@ -22,6 +22,7 @@
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/output/plot.hpp"
 #include "rackopt/problem/problem_loader.hpp"
+#include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/best_design_curve.hpp"
 #include "report_test_support.hpp"
 #include "support/shipped_problems.hpp"
@@ -183,6 +184,35 @@ TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
   EXPECT_FALSE(fs::exists(dir + "/best.csv"));
   expect_links_exist(dir);
   EXPECT_NE(read_text(dir + "/report.md").find("**chosen**"), std::string::npos);
+}
+
+// The grey cloud behind the front reads the objectives' columns of
+// evaluations.csv by the names the record's writer gives them (with units).
+TEST(StudyReport, FrontPlotFindsTheObjectivesInTheRecordsCsv) {
+  StudySpec spec = base_spec(StudyKind::kPareto);
+  spec.objectives.push_back(objective("supports_per_metre"));
+  StudyResult r = pareto_result(spec, 5, 2);
+  const std::string dir = scratch_path("pareto_cloud");
+  record::StoreOptions options;
+  for (const auto& m : spec.all_metrics())
+    options.units[metrics::to_string(m)] = std::string(metrics::find_metric(m.name).unit);
+  std::vector<std::string> keys;
+  for (const auto& v : spec.variables) keys.push_back(v.key);
+  {
+    auto store = record::EvaluationStore::open(dir + "/evaluations.sqlite", "fp", keys, false, options);
+    for (const auto& d : r.front) {
+      record::RecordedEvaluation e;
+      e.x = d.x;
+      for (std::size_t i = 0; i < d.metric_labels.size(); ++i) e.metrics.emplace_back(d.metric_labels[i], d.metric_values[i]);
+      store.append(e);
+    }
+    std::vector<std::string> labels;
+    for (const auto& m : spec.all_metrics()) labels.push_back(metrics::to_string(m));
+    record::write_evaluations_csv(store, keys, labels, dir + "/evaluations.csv");
+  }
+  r.evaluations_csv_path = dir + "/evaluations.csv";
+  write_study_report(spec, r, dir);
+  EXPECT_NE(read_text(dir + "/pareto.gp").find("title 'every evaluation'"), std::string::npos);
 }
 
 TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {

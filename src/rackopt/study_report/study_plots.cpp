@@ -89,7 +89,7 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
     unit[i] = metric_unit(spec.objectives[i].label);
   }
   std::vector<std::string> wanted{"ok", "gradient_probe"};
-  for (const auto& o : spec.objectives) wanted.push_back(o.label);
+  for (const auto& o : spec.objectives) wanted.push_back(metric_col(o.label));  // as the runner writes the header
   const std::vector<int> ecols = evaluations_columns(evaluations_csv, wanted);
   const std::string eval_name = fs::path(evaluations_csv).filename().string();
 
