@@ -4,7 +4,9 @@
 // an apostrophe).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "rackopt/output/plot.hpp"
 #include "rackopt/output/stiffness_report.hpp"
@@ -29,6 +31,37 @@ TEST(PlotScripts, TitlesWithAnApostropheStayOneString) {
                                     reliability_gnuplot(name), stiffness_gnuplot(StiffnessCurve{}, name, "s.csv", "s.png")}) {
     EXPECT_NE(script.find(opening), std::string::npos) << script.substr(0, 400);
     EXPECT_EQ(script.find("paper's"), std::string::npos) << "the raw name, unescaped";
+  }
+}
+
+// The load-share panel reads each pair slot's in_mesh and load_share
+// columns of the CSV written beside it: the script's column numbers must be
+// those of the CSV's header, for every slot.
+TEST(PlotScripts, StiffnessPlotReadsEachSlotsOwnColumns) {
+  StiffnessCurve c;
+  c.max_pairs = 3;
+  const std::string csv = stiffness_csv(c);
+  std::vector<std::string> header;
+  std::string cell;
+  for (char ch : csv.substr(0, csv.find('\n'))) {
+    if (ch == ',') {
+      header.push_back(cell);
+      cell.clear();
+    } else {
+      cell += ch;
+    }
+  }
+  header.push_back(cell);
+  auto column = [&](const std::string& name) {  // 1-based, as gnuplot counts
+    return static_cast<int>(std::find(header.begin(), header.end(), name) - header.begin()) + 1;
+  };
+  const std::string gp = stiffness_gnuplot(c, "t", "s.csv", "s.png");
+  for (int q = 0; q < 3; ++q) {
+    const std::string slot = "pair" + std::to_string(q);
+    const std::string expected = "using 1:($" + std::to_string(column(slot + "_in_mesh")) + ">0 ? $" +
+                                 std::to_string(column(slot + "_load_share")) + " : 1/0) with lines title 'pair slot " +
+                                 std::to_string(q) + "'";
+    EXPECT_NE(gp.find(expected), std::string::npos) << expected << "\n" << gp;
   }
 }
 

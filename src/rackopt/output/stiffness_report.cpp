@@ -3,7 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <iterator>
 #include <sstream>
+#include <string_view>
 
 #include "rackopt/stiffness/iso_single_stiffness.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
@@ -129,18 +131,32 @@ std::string mesh_dynamics_summary(const MeshRipple& r, const TransmissionError& 
   return o.str();
 }
 
+namespace {
+
+// Each pair slot's columns of stiffness.csv, in order; the plot script finds
+// its columns here too.
+constexpr const char* kPairColumns[] = {"in_mesh",        "rack_tooth",     "pinion_tooth",      "s_m",
+                                        "x_m",            "load_share",     "c_pinion_bending",  "c_pinion_shear",
+                                        "c_pinion_axial", "c_fillet",       "c_hertz",           "c_rack_bending",
+                                        "c_rack_shear",   "c_rack_axial",   "c_rack_foundation", "c_body",
+                                        "relief_m"};
+constexpr int kPairBase = 7;  // 1-based column of pair0_in_mesh (after the six columns of the sample)
+
+constexpr int pair_column(std::string_view name) {
+  for (int i = 0; i < static_cast<int>(std::size(kPairColumns)); ++i)
+    if (kPairColumns[i] == name) return i;
+  return -1;
+}
+
+}  // namespace
+
 std::string stiffness_csv(const StiffnessCurve& c) {
   std::string out;
   out.reserve(c.samples.size() * (64 + 260 * static_cast<std::size_t>(c.max_pairs)));
   out += "travel_m,stiffness_N_per_m,rigid_body_stiffness_N_per_m,pairs_in_mesh,body_equivalent_compliance_m_per_N,"
          "transmission_error_m";
-  static const char* kPairCols[] = {"in_mesh",         "rack_tooth",     "pinion_tooth",   "s_m",
-                                    "x_m",             "load_share",     "c_pinion_bending", "c_pinion_shear",
-                                    "c_pinion_axial",  "c_fillet",       "c_hertz",        "c_rack_bending",
-                                    "c_rack_shear",    "c_rack_axial",   "c_rack_foundation", "c_body",
-                                    "relief_m"};
   for (int q = 0; q < c.max_pairs; ++q) {
-    for (const char* col : kPairCols) out += ",pair" + std::to_string(q) + "_" + col;
+    for (const char* col : kPairColumns) out += ",pair" + std::to_string(q) + "_" + col;
   }
   out += '\n';
   char buf[64];
@@ -163,7 +179,7 @@ std::string stiffness_csv(const StiffnessCurve& c) {
       }
       if (!p) {
         out += ",0";
-        for (std::size_t k = 1; k < std::size(kPairCols); ++k) out += ",";
+        for (std::size_t k = 1; k < std::size(kPairColumns); ++k) out += ",";
         continue;
       }
       out += ",1," + std::to_string(p->rack_tooth) + "," + std::to_string(p->pinion_tooth);
@@ -276,6 +292,8 @@ std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title,
   o << "set output '" << png_name << "'\n";
   o << "set multiplot layout 3,1 title " << gnuplot_quote(title) << "\n";
   o << "set grid\nset key outside right\n";
+  // Fixed margins: the panels' travel axes line up whatever their legends' widths.
+  o << "set lmargin at screen 0.08\nset rmargin at screen 0.80\n";
   // The travel runs from one rack support to the next: the x range ends at
   // the span, and both supports (hinges) are marked in every panel.
   if (!c.samples.empty()) {
@@ -292,12 +310,11 @@ std::string stiffness_gnuplot(const StiffnessCurve& c, const std::string& title,
     << "     '' using 1:($3/1e6) with lines dt 2 title 'rigid rack body'\n";
   o << "set xlabel 'travel of the pitch point along the span [m]'\n";
   o << "unset logscale y\nset ylabel 'load share [-]'\nset yrange [0:1.05]\n";
-  const int base = 7;  // first per-pair column (1-based) is pair0_in_mesh
-  const int per_pair = 16;
+  const int per_pair = static_cast<int>(std::size(kPairColumns));
   o << "plot '" << csv_name << "' using 1:(1/0) notitle";
   for (int q = 0; q < c.max_pairs; ++q) {
-    const int in_col = base + q * per_pair;
-    const int share_col = in_col + 5;
+    const int in_col = kPairBase + q * per_pair + pair_column("in_mesh");
+    const int share_col = kPairBase + q * per_pair + pair_column("load_share");
     o << ", \\\n     " << "'' using 1:($" << in_col << ">0 ? $" << share_col
       << " : 1/0) with lines title 'pair slot " << q << "'";
   }
