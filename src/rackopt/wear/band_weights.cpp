@@ -68,14 +68,32 @@ void pointwise_weights(const std::vector<double>& node_c, const LoadIntervals& i
 void band_weights(const std::vector<double>& node_c, const LoadIntervals& intervals, double c, double L,
                   std::vector<int>& idx, std::vector<double>& val) {
   const double k2pi = 2.0 / M_PI;
-  const std::size_t first = idx.size();  // this point's weights start here
+  // The upper node's weight of the last segment, kept out of `val` until the
+  // next segment's lower part is added to it (the same sum as adding to
+  // val.back(), without a round trip through memory between the two
+  // divisions of consecutive segments, which serialized the loop).
+  int pending_idx = -1;
+  double pending_val = 0;
+  auto flush = [&] {
+    if (pending_idx < 0) return;
+    idx.push_back(pending_idx);
+    val.push_back(pending_val);
+    pending_idx = -1;
+  };
   for (const auto& iv : intervals) {
     if (iv.size() < 2) continue;  // no segment
     if (node_c[iv.back()] <= c - L || node_c[iv.front()] >= c + L) continue;
     // Segments wholly below the band (ub <= -1) are a prefix: start after
     // them. u = (node - c)/L is computed as in the loop, and it is monotone
     // in the node coordinate (rounding is), so the same segments are skipped.
-    std::size_t k = first_segment_not(iv.size() - 1, [&](std::size_t j) { return (node_c[iv[j + 1]] - c) / L <= -1; });
+    // The search compares without dividing (node - c <= -L, which can
+    // differ from u <= -1 only by a rounding at the band's edge), and the
+    // exact test then moves the start to where the loop's own expression
+    // puts it.
+    const auto below = [&](std::size_t j) { return (node_c[iv[j + 1]] - c) / L <= -1; };
+    std::size_t k = first_segment_not(iv.size() - 1, [&](std::size_t j) { return node_c[iv[j + 1]] - c <= -L; });
+    while (k > 0 && below(k - 1) == false) --k;
+    while (k + 1 < iv.size() && below(k)) ++k;
     // F0, F1 at the previous segment's upper end are reused (asin is the cost).
     double prev_u = std::nan(""), prev_f0 = 0, prev_f1 = 0;
     // A segment's lower u is the previous one's upper u (the same expression
@@ -96,16 +114,20 @@ void band_weights(const std::vector<double>& node_c, const LoadIntervals& interv
       const double I0 = prev_f0 - f0a, I1 = prev_f1 - f1a;
       const double du = ub - ua;
       // The lower node is usually the previous segment's upper node: merge.
-      if (idx.size() > first && idx.back() == iv[k]) {
-        val.back() += k2pi * (ub * I0 - I1) / du;
+      const double lower = k2pi * (ub * I0 - I1) / du;
+      if (pending_idx == iv[k]) {
+        pending_val += lower;
+        flush();
       } else {
+        flush();
         idx.push_back(iv[k]);
-        val.push_back(k2pi * (ub * I0 - I1) / du);
+        val.push_back(lower);
       }
-      idx.push_back(iv[k + 1]);
-      val.push_back(k2pi * (I1 - ua * I0) / du);
+      pending_idx = iv[k + 1];
+      pending_val = k2pi * (I1 - ua * I0) / du;
     }
   }
+  flush();
 }
 
 }  // namespace rackopt
