@@ -21,10 +21,13 @@
 #include <sstream>
 #include <thread>
 
+#include "support/sql_text.hpp"
+
 namespace rackopt::record {
 namespace {
 
 namespace fs = std::filesystem;
+using test_support::sql_text;
 
 class StoreTest : public ::testing::Test {
  protected:
@@ -170,22 +173,6 @@ INSERT INTO variables VALUES(0, 'module_m'), (1, 'face_width_m');
   EXPECT_EQ(sqlite3_step(s), SQLITE_DONE);
   sqlite3_finalize(s);
   sqlite3_close(db);
-}
-
-// What a closed store file says about itself, read with SQLite directly.
-std::string sql_text(const std::string& path, const std::string& query) {
-  sqlite3* db = nullptr;
-  std::string out = "<no row>";
-  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
-    sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db, query.c_str(), -1, &s, nullptr) == SQLITE_OK && sqlite3_step(s) == SQLITE_ROW) {
-      const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
-      out = t ? t : "<null>";
-    }
-    sqlite3_finalize(s);
-  }
-  sqlite3_close(db);
-  return out;
 }
 
 TEST_F(StoreTest, SchemaOneFileIsUpgradedAndItsRowsHaveNoWarnings) {

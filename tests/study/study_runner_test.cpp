@@ -1,7 +1,6 @@
 #include "rackopt/study/study_runner.hpp"
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +17,7 @@
 #include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study/study_problem.hpp"
 #include "study_test_support.hpp"
+#include "support/sql_text.hpp"
 
 namespace rackopt::study {
 namespace {
@@ -126,25 +126,13 @@ TEST(StudyRecord, SqlFiltersVariablesAndMetricsWithTheirUnitsAndModels) {
   for (const auto& p : r.sweep_points) close_supports += metric(p, "supports_per_metre") > 0.5 ? 1 : 0;
   ASSERT_GT(close_supports, 0u);
   ASSERT_LT(close_supports, 5u);
-  sqlite3* db = nullptr;
-  ASSERT_EQ(sqlite3_open_v2((dir + "/evaluations.sqlite").c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
-  auto text = [&](const std::string& sql) {
-    sqlite3_stmt* st = nullptr;
-    std::string out = "<error>";
-    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) == SQLITE_OK && sqlite3_step(st) == SQLITE_ROW) {
-      const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
-      out = t ? t : "<null>";
-    }
-    sqlite3_finalize(st);
-    return out;
-  };
+  auto text = [&](const std::string& sql) { return test_support::sql_text(dir + "/evaluations.sqlite", sql); };
   EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE supports_per_metre > 0.5"), std::to_string(close_supports));
   EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE abs(supports_per_metre * rack_span - 1) > 1e-12"), "0");
   EXPECT_EQ(text("SELECT unit FROM value_columns WHERE source = 'rack.span'"), "m");
   EXPECT_EQ(text("SELECT unit FROM value_columns WHERE source = 'supports_per_metre'"), "1/m");
   EXPECT_EQ(text("SELECT unit FROM value_columns WHERE name = 'contact_ratio'"), "-");
   EXPECT_EQ(text("SELECT count(*) FROM evaluations WHERE models LIKE '%geometry%'"), std::to_string(r.evaluations));
-  sqlite3_close(db);
   // evaluations.csv names the same units in its header.
   std::ifstream csv(r.evaluations_csv_path);
   std::string header;

@@ -398,13 +398,14 @@ struct EvaluationStore::Impl {
     insert_eval = prepare((sql + ") " + values + ")").c_str());
   }
 
-  // Binds the real columns of `e` (from parameter kRecordParams + 1 on);
-  // a metric the row lacks stays NULL.
-  void bind_values(sqlite3_stmt* s, const RecordedEvaluation& e) {
-    int k = kRecordParams;
+  // Binds the real columns of `e` to parameters offset + 1 on, in the
+  // columns' order (the variables', then the metrics' by id); a metric the
+  // row lacks stays NULL.
+  void bind_real_columns(sqlite3_stmt* s, int offset, const RecordedEvaluation& e) const {
+    int k = offset;
     for (double v : e.x) sqlite3_bind_double(s, ++k, v);
     for (const auto& [name, value] : e.metrics)
-      sqlite3_bind_double(s, kRecordParams + static_cast<int>(e.x.size() + metric_ids.at(name)), value);
+      sqlite3_bind_double(s, offset + static_cast<int>(e.x.size() + metric_ids.at(name)), value);
   }
 
   // Rows recorded before version 3 get their real columns from their blobs.
@@ -417,16 +418,13 @@ struct EvaluationStore::Impl {
         sql += " = ?" + std::to_string(++k);
       }
     if (k == 0) return;
-    sql += ", models = '' WHERE id = ?" + std::to_string(k + 1);
+    sql += " WHERE id = ?" + std::to_string(k + 1);
     Stmt update = prepare(sql.c_str());
     Stmt rows = prepare((std::string(kSelectColumns) + "ORDER BY id").c_str());
     int rc;
     while ((rc = sqlite3_step(rows.get())) == SQLITE_ROW) {
       const RecordedEvaluation e = read_row(rows.get());
-      int j = 0;
-      for (double v : e.x) sqlite3_bind_double(update.get(), ++j, v);
-      for (const auto& [name, value] : e.metrics)
-        sqlite3_bind_double(update.get(), static_cast<int>(e.x.size() + metric_ids.at(name)), value);
+      bind_real_columns(update.get(), 0, e);
       sqlite3_bind_int64(update.get(), k + 1, e.id);
       run(update.get(), "filling the value columns of an older row");
     }
@@ -710,7 +708,7 @@ std::int64_t EvaluationStore::append(const RecordedEvaluation& e) {
   sqlite3_bind_double(s, 12, e.seconds);
   m.bind_text(s, 13, encode_warnings(e.warnings));
   m.bind_text(s, 14, join_models(e.models));
-  m.bind_values(s, e);
+  m.bind_real_columns(s, Impl::kRecordParams, e);
   m.run(s, "recording an evaluation");
   const std::int64_t id = sqlite3_last_insert_rowid(m.db);
   ++m.count;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -19,6 +20,9 @@
 
 namespace rackopt {
 namespace {
+
+// The fractions of the life at which a full life keeps a snapshot.
+constexpr std::array<double, 4> kSnapshotFractions{0.25, 0.5, 0.75, 1.0};
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kPinion = 0;
@@ -779,7 +783,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
     res.pinion = profile(p, kPinion, zero);
     res.rack = profile(p, kRack, zero);
     if (snapshots)
-      for (double f : {0.25, 0.5, 0.75, 1.0}) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
+      for (double f : kSnapshotFractions) res.snapshots.push_back({f, 0, 0, eps0, res.pinion, res.rack});
     res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return res;
   }
@@ -970,8 +974,9 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
   // the same as a search from scratch: same depths, bit for bit); the last
   // snapshot is the final state itself.
   const std::size_t W = 2 * static_cast<std::size_t>(N);
-  std::array<std::vector<double>, 2> hs{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
-  for (double frac : snapshots ? std::vector<double>{0.25, 0.5, 0.75, 1.0} : std::vector<double>{}) {
+  std::array<std::vector<double>, 2> hs;
+  if (snapshots) hs = {std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
+  for (double frac : std::span(kSnapshotFractions).first(snapshots ? kSnapshotFractions.size() : 0)) {
     const double nt = frac * n;
     std::size_t k = 0;
     while (k + 2 < hist_n.size() && hist_n[k + 1] < nt) ++k;
