@@ -25,10 +25,9 @@ struct ParsedProblem {
   SourceMark variants_mark;
 };
 
-ParsedProblem parse_problem(const std::string& text, const std::string& file,
-                            const std::vector<std::string>& overrides) {
+ParsedProblem parse_problem(MarkedNode root, const std::string& file, const std::vector<std::string>& overrides) {
   ParsedProblem out;
-  out.base = parse_marked_yaml(text, file);
+  out.base = std::move(root);
   if (out.base.is_null()) {
     out.base.type = MarkedNode::Type::kMap;
     out.base.mark = SourceMark{file, 1, 1};
@@ -89,7 +88,12 @@ std::string read_file(const std::string& path) {
 
 ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& name_for_messages,
                               const std::vector<std::string>& overrides) {
-  ParsedProblem parsed = parse_problem(yaml_text, name_for_messages, overrides);
+  return load_problem_tree_node(parse_marked_yaml(yaml_text, name_for_messages), name_for_messages, overrides);
+}
+
+ProblemTree load_problem_tree_node(MarkedNode root, const std::string& name_for_messages,
+                                   const std::vector<std::string>& overrides) {
+  ParsedProblem parsed = parse_problem(std::move(root), name_for_messages, overrides);
 
   // Every variant must be valid, selected or not: a broken variant is a
   // broken file. They are checked with the file's values only.
@@ -149,7 +153,7 @@ Drive load_problem(const std::string& path, const std::vector<std::string>& over
 }
 
 std::vector<std::string> problem_variants(const std::string& path) {
-  const ParsedProblem parsed = parse_problem(read_file(path), path, {});
+  const ParsedProblem parsed = parse_problem(parse_marked_yaml(read_file(path), path), path, {});
   std::vector<std::string> names;
   for (const auto& v : parsed.variants) names.push_back(v.key);
   return names;

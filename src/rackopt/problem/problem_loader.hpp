@@ -66,6 +66,12 @@ struct ProblemTree {
 ProblemTree load_problem_tree(const std::string& yaml_text, const std::string& name_for_messages,
                               const std::vector<std::string>& overrides = {});
 ProblemTree load_problem_tree_file(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same from a problem already parsed (parse_marked_yaml), its marks kept:
+// a problem held in memory, such as a study file's inline `problem:` map,
+// whose errors then point into the text it was parsed from.
+// `name_for_messages` names the drive (its stem) like the file name does.
+ProblemTree load_problem_tree_node(MarkedNode root, const std::string& name_for_messages,
+                                   const std::vector<std::string>& overrides = {});
 Drive drive_from_tree(const ProblemTree& tree);
 
 // Names of the variants a problem file defines (file order); empty if none.

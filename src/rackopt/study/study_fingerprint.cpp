@@ -182,7 +182,7 @@ std::string study_fingerprint(const StudySpec& spec) {
   c.integer(spec.sweep.points);
 
   c.key("problem");
-  const ProblemTree tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
+  const ProblemTree tree = study_problem_tree(spec);
   c.str(tree.variant);
   c.node(tree.root);
 

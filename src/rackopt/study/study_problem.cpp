@@ -42,7 +42,7 @@ struct StudyProblem::Shared {
 StudyProblem::StudyProblem(const StudySpec& spec) {
   auto s = std::make_shared<Shared>();
   s->spec = spec;
-  s->tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
+  s->tree = study_problem_tree(spec);
   s->requests = spec.all_metrics();
   for (const auto& r : s->requests) s->labels.push_back(metrics::to_string(r));
   auto index_of = [&](const metrics::MetricRequest& r) {

@@ -27,4 +27,9 @@ std::vector<metrics::MetricRequest> StudySpec::all_metrics() const {
   return out;
 }
 
+ProblemTree study_problem_tree(const StudySpec& spec) {
+  if (spec.problem_root) return load_problem_tree_node(*spec.problem_root, spec.problem_path, spec.problem_overrides);
+  return load_problem_tree_file(spec.problem_path, spec.problem_overrides);
+}
+
 }  // namespace rackopt::study

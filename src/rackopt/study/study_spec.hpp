@@ -20,11 +20,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/marked_yaml/marked_tree.hpp"
+#include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/solvers/pareto.hpp"
@@ -115,7 +118,13 @@ struct StudySpec {
   StudyKind kind = StudyKind::kEvaluate;
   std::uint64_t seed = 1;    // study.seed: every random choice (LHS, Sobol shift, stochastic solvers, multistart, Monte Carlo)
 
-  std::string problem_path;                 // resolved against the study file's folder
+  // The problem file, resolved against the study file's folder; for a
+  // problem the study holds in memory, the name its messages carry.
+  std::string problem_path;
+  // The problem itself when the study holds it: an inline `problem:` map of
+  // the study file, or a problem a program gave load_study_text, with the
+  // marks of the text it was parsed from. Null: read problem_path.
+  std::shared_ptr<const MarkedNode> problem_root;
   std::vector<std::string> problem_overrides;  // `problem_set:` entries, then CLI --set problem.* ones, "key=value"
 
   std::vector<DesignVariable> variables;    // may be empty for evaluate/reliability
@@ -156,6 +165,11 @@ struct StudySpec {
 // a bigger budget. Used by the recorder to refuse resuming another study's
 // results into the same folder. Same inputs => same text.
 std::string study_fingerprint(const StudySpec& spec);
+
+// The study's problem as a tree, its problem_overrides applied: from
+// problem_root when the study holds it, else read from problem_path. Throws
+// what load_problem_tree_file throws.
+ProblemTree study_problem_tree(const StudySpec& spec);
 
 // The format of study_fingerprint, stored beside it in the evaluation store:
 // "2" is FNV-1a 64 with the historical basis (core/fnv1a.hpp,

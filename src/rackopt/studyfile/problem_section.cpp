@@ -76,10 +76,19 @@ bool path_within(const std::string& path, const std::string& key) {
 }  // namespace
 
 LoadedProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
-                                   const std::vector<std::string>& cli_problem_overrides, StudySpec& spec) {
-  const auto problem_text = top.scalar("problem", "the path of a problem file");
-  if (!problem_text) top.missing("problem", "the path of a problem file, e.g. ../problems/rack_railway.yaml");
-  {
+                                   const std::vector<std::string>& cli_problem_overrides,
+                                   const InMemoryProblem* given, StudySpec& spec) {
+  if (given) {
+    // The program's problem wins over the file's `problem:`, which may be left out.
+    spec.problem_path = given->name;
+    spec.problem_root = std::make_shared<const MarkedNode>(parse_marked_yaml(given->yaml_text, given->name));
+  } else if (const MarkedNode* inline_problem = top.get("problem"); inline_problem && inline_problem->is_map()) {
+    // The problem written in the study file itself: its errors point there.
+    spec.problem_path = spec.file + " (problem:)";
+    spec.problem_root = std::make_shared<const MarkedNode>(*inline_problem);
+  } else {
+    const auto problem_text = top.scalar("problem", "the path of a problem file, or the problem itself as a map");
+    if (!problem_text) top.missing("problem", "the path of a problem file, e.g. ../problems/rack_railway.yaml");
     const fs::path p(problem_text->first);
     spec.problem_path = (p.is_absolute() || base_dir.empty()) ? p.lexically_normal().string()
                                                               : (fs::path(base_dir) / p).lexically_normal().string();
@@ -110,7 +119,7 @@ LoadedProblem read_problem_section(const SectionReader& top, const std::string& 
   }
   LoadedProblem problem;
   try {
-    problem.tree = load_problem_tree_file(spec.problem_path, spec.problem_overrides);
+    problem.tree = study_problem_tree(spec);
     problem.drive = drive_from_tree(problem.tree);
     check_overrides_against_absolute_inputs(problem.drive, spec.problem_overrides);
   } catch (const InputError& e) {

@@ -41,7 +41,8 @@ std::uint64_t read_seed(const SectionReader& s, const std::string& key, std::uin
 }  // namespace
 
 StudySpec load_study_text(const std::string& yaml_text, const std::string& name_for_messages,
-                          const std::string& base_dir, const std::vector<std::string>& overrides) {
+                          const std::string& base_dir, const std::vector<std::string>& overrides,
+                          const InMemoryProblem* given_problem) {
   MarkedNode root = parse_marked_yaml(yaml_text, name_for_messages);
   if (root.is_null()) {
     root.type = MarkedNode::Type::kMap;
@@ -77,7 +78,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   spec.seed = read_seed(study, "seed", 1);
   const SourceMark kind_mark = study.value_mark("kind");
 
-  const LoadedProblem problem = read_problem_section(top, base_dir, cli_problem_overrides, spec);
+  const LoadedProblem problem = read_problem_section(top, base_dir, cli_problem_overrides, given_problem, spec);
   const Drive& drive = problem.drive;
   read_variables(top, problem, spec);
   const std::vector<MetricSite> metric_sites = read_metric_sections(top, spec);

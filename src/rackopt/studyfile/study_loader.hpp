@@ -32,9 +32,20 @@ namespace rackopt::studyfile {
 // a sweep bigger than max_points, too many discrete combinations.
 study::StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// A problem a program holds in memory (problem YAML text and the name its
+// messages carry), given to a study instead of the file its `problem:` names.
+struct InMemoryProblem {
+  std::string yaml_text;
+  std::string name;
+};
+
 // Same, from text. `name_for_messages` is used in marks; relative problem
-// paths are resolved against `base_dir`.
+// paths are resolved against `base_dir`. `problem`, when given, is the
+// study's problem and replaces its `problem:` key, which may then be left
+// out. A study file may also hold its problem inline: `problem:` as a map of
+// the problem file's sections (then errors in it point into the study file).
 study::StudySpec load_study_text(const std::string& yaml_text, const std::string& name_for_messages,
-                          const std::string& base_dir, const std::vector<std::string>& overrides = {});
+                          const std::string& base_dir, const std::vector<std::string>& overrides = {},
+                          const InMemoryProblem* problem = nullptr);
 
 }  // namespace rackopt::studyfile

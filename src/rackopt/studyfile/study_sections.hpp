@@ -13,6 +13,7 @@
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/problem/problem_loader.hpp"
 #include "rackopt/study/study_spec.hpp"
+#include "rackopt/studyfile/study_loader.hpp"
 
 namespace rackopt::studyfile {
 
@@ -28,11 +29,14 @@ struct LoadedProblem {
   ProblemTree tree;
   Drive drive;
 };
-// Fills spec.problem_path and spec.problem_overrides (problem_set, then
-// `cli_problem_overrides`) and loads the problem; its errors in an override
-// are reported where the study file or the command line wrote it.
+// Fills spec.problem_path, spec.problem_root (a problem held in memory:
+// `given`, else an inline `problem:` map) and spec.problem_overrides
+// (problem_set, then `cli_problem_overrides`) and loads the problem; its
+// errors in an override are reported where the study file or the command
+// line wrote it.
 LoadedProblem read_problem_section(const SectionReader& top, const std::string& base_dir,
-                                   const std::vector<std::string>& cli_problem_overrides, study::StudySpec& spec);
+                                   const std::vector<std::string>& cli_problem_overrides,
+                                   const InMemoryProblem* given, study::StudySpec& spec);
 
 // --- variables
 // Fills spec.variables; every bound and value is checked by building the
