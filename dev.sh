@@ -5,6 +5,9 @@
 #   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan, built with clang
 #                            (build-asan/), then 60 s of the input fuzzer
 #   ./dev.sh build           install + build only
+#   ./dev.sh python          install, build, and make `import rackopt` work for
+#                            /usr/bin/python3 (a rackopt.pth in its user site;
+#                            docs/python.md)
 #   ./dev.sh fuzz [SECONDS]  libFuzzer over every YAML input path for SECONDS (default 600),
 #                            clang + ASan/UBSan in build-asan/ (docs/input_limits.md)
 # Re-running is fast: packages already present are not touched, builds are incremental.
@@ -13,7 +16,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
           libgsl-dev libyaml-cpp-dev libsqlite3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
-          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev)
+          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 
 # Only for the sanitizer build and ./dev.sh fuzz: clang and its libFuzzer runtime.
 SANITIZE_PACKAGES=(clang libclang-rt-14-dev)
@@ -97,10 +101,18 @@ case "$cmd" in
       build build
       ctest --test-dir build --output-on-failure -j "$JOBS"
     fi ;;
+  python)
+    install_missing; build build
+    # The build folder on the system interpreter's path, through its user
+    # site: every later rebuild is picked up, and deleting the file undoes it.
+    site=$(/usr/bin/python3 -m site --user-site)
+    mkdir -p "$site"
+    echo "$PWD/build/python" > "$site/rackopt.pth"
+    /usr/bin/python3 -c 'import rackopt; print("import rackopt works: rackopt", rackopt.__version__, "from", rackopt.__file__)' ;;
   fuzz)
     install_missing "${SANITIZE_PACKAGES[@]}"
     CMAKE_TARGET=rackopt_input_fuzzer build_sanitized
     fuzz "${1:-600}" ;;
   *)
-    echo "usage: ./dev.sh demo|test [--sanitize]|build|fuzz [SECONDS]" >&2; exit 2 ;;
+    echo "usage: ./dev.sh demo|test [--sanitize]|build|python|fuzz [SECONDS]" >&2; exit 2 ;;
 esac

@@ -3,7 +3,6 @@
 // shows progress, survives Ctrl-C (the first one stops cleanly and the
 // results so far are written; --resume continues; core/interrupt.hpp), then
 // writes the report.
-#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -23,26 +22,11 @@
 #endif
 
 namespace rackopt::cli {
-namespace {
-
-// "railway sizing" -> "railway_sizing": a folder name without surprises.
-std::string folder_name(const std::string& name) {
-  std::string out;
-  for (char c : name) {
-    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
-    out += plain ? c : '_';
-  }
-  if (out.empty() || out == "." || out == "..") out = "study";
-  return out;
-}
-
-}  // namespace
-
 int cmd_run(const Args& a) {
   namespace fs = std::filesystem;
   const study::StudySpec spec = studyfile::load_study_file(a.file, a.overrides);
   const std::string out_dir =
-      a.out_dir.empty() ? (fs::path("out") / folder_name(spec.name)).string() : a.out_dir;
+      a.out_dir.empty() ? study::default_out_dir(spec) : a.out_dir;
 
   if (spec.verify_fe) {  // `verify: fe` without ccx or Gmsh: refused before the study runs
     (void)fe::find_ccx();

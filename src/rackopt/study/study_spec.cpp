@@ -1,5 +1,6 @@
 #include "rackopt/study/study_spec.hpp"
 
+#include <cctype>
 #include <set>
 
 namespace rackopt::study {
@@ -25,6 +26,16 @@ std::vector<metrics::MetricRequest> StudySpec::all_metrics() const {
   for (const auto& c : constraints) add(c.metric);
   for (const auto& r : report_metrics) add(r);
   return out;
+}
+
+std::string default_out_dir(const StudySpec& spec) {
+  std::string folder;
+  for (char c : spec.name) {
+    const bool plain = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.';
+    folder += plain ? c : '_';
+  }
+  if (folder.empty() || folder == "." || folder == "..") folder = "study";
+  return "out/" + folder;
 }
 
 ProblemTree study_problem_tree(const StudySpec& spec) {

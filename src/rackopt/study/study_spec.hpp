@@ -166,6 +166,11 @@ struct StudySpec {
 // results into the same folder. Same inputs => same text.
 std::string study_fingerprint(const StudySpec& spec);
 
+// The output folder a study writes to when none is given: out/<name> with
+// every character but letters, digits, '-', '_' and '.' made '_' ("railway
+// sizing" -> "out/railway_sizing"), "out/study" for an empty name.
+std::string default_out_dir(const StudySpec& spec);
+
 // The study's problem as a tree, its problem_overrides applied: from
 // problem_root when the study holds it, else read from problem_path. Throws
 // what load_problem_tree_file throws.

@@ -103,6 +103,12 @@ LoadedProblem read_problem_section(const SectionReader& top, const std::string& 
   }
 
   std::vector<OverrideOrigin> origins;
+  if (given) {
+    for (const auto& o : given->overrides) {
+      spec.problem_overrides.push_back(o);
+      origins.push_back(OverrideOrigin{override_key(o), SourceMark{kCommandLine, 0, 0}, false});
+    }
+  }
   if (const MarkedNode* ps = top.get("problem_set")) {
     if (!ps->is_map()) {
       throw InputError(ps->mark, "problem_set",

@@ -32,11 +32,13 @@ namespace rackopt::studyfile {
 // a sweep bigger than max_points, too many discrete combinations.
 study::StudySpec load_study_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
-// A problem a program holds in memory (problem YAML text and the name its
-// messages carry), given to a study instead of the file its `problem:` names.
+// A problem a program holds in memory (problem YAML text, the name its
+// messages carry and `--set` assignments over it, applied before the study's
+// problem_set), given to a study instead of the file its `problem:` names.
 struct InMemoryProblem {
   std::string yaml_text;
   std::string name;
+  std::vector<std::string> overrides;
 };
 
 // Same, from text. `name_for_messages` is used in marks; relative problem
