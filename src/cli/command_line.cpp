@@ -264,6 +264,17 @@ std::string did_you_mean(const std::string& given, const std::vector<std::string
   throw UsageError("unknown option " + option + (is_long ? did_you_mean(option, long_names(cmd)) : ""), name);
 }
 
+// CLI11's wording of a value missing or given to a flag, in the words of the
+// other usage errors.
+std::string mismatch_message(const std::string& what) {
+  auto ends_with = [&what](const std::string& end) {
+    return what.size() > end.size() && what.compare(what.size() - end.size(), end.size(), end) == 0;
+  };
+  if (ends_with(" missing")) return what.substr(0, what.find(':')) + " needs a value";  // "--out: 1 required DIR missing"
+  if (ends_with(" was given a disallowed flag override")) return "--" + what.substr(0, what.find(' ')) + " takes no value";
+  return what;
+}
+
 }  // namespace
 
 CommandLine parse_command_line(int argc, char** argv) {
@@ -280,11 +291,8 @@ CommandLine parse_command_line(int argc, char** argv) {
   } catch (const CLI::RequiredError&) {  // the only required argument is a command's FILE
     const std::string cmd = selected_command(*app);
     throw UsageError(cmd + " needs a " + (cmd == "run" ? "study" : "problem") + " FILE", cmd);
-  } catch (const CLI::ArgumentMismatch& e) {  // "--out: 1 required DIR missing"
-    const std::string what = e.what();
-    const std::size_t colon = what.find(':');
-    const bool missing = colon != std::string::npos && what.size() > 8 && what.compare(what.size() - 8, 8, " missing") == 0;
-    throw UsageError(missing ? what.substr(0, colon) + " needs a value" : what, selected_command(*app));
+  } catch (const CLI::ArgumentMismatch& e) {
+    throw UsageError(mismatch_message(e.what()), selected_command(*app));
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what(), selected_command(*app));
   } catch (const UsageError& e) {  // a bad value (add_whole): it knows no command

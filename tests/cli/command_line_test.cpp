@@ -146,6 +146,7 @@ TEST(CommandLine, AMissingValueOrAMisplacedOptionIsAUsageError) {
   EXPECT_NE(extra.err.find("unexpected argument problems/rack_railway.yaml"), std::string::npos) << extra.err;
   const CliResult flag_value = run_cli("check problems/ship_lift.yaml --json=false");
   EXPECT_EQ(flag_value.code, 2) << flag_value.err;
+  EXPECT_NE(flag_value.err.find("--json takes no value"), std::string::npos) << flag_value.err;
 }
 
 }  // namespace
