@@ -108,13 +108,13 @@ void add_stiffness(CLI::App& app, Args& a) {
   c.footer(
       "Writes DIR/stiffness.csv and DIR/stiffness.png.\n"
       "Examples:\n"
-      "  rackopt stiffness problems/rack_railway.yaml --set rack.span=\"1.2 m\" --out out/short_span\n"
+      "  rackopt stiffness problems/rack_railway.yaml --set rack.span=\"1.2 m\" --out=out/span\n"
       "  rackopt stiffness problems/ship_lift.yaml -o out/ship_lift --json");
 }
 
 void add_wear(CLI::App& app, Args& a) {
   CLI::App& c = *app.add_subcommand("wear", "Archard wear of both flanks, wear life and life at reliability R");
-  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md; keys wear, duty, reliability)");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md;\nkeys wear, duty, reliability)");
   add_set(c, a, kProblemSet);
   add_out(c, a, "out/<problem file name>_wear");
   add_json(c, a, "the wear, the lives\nand the files (docs/output.md)");
@@ -164,13 +164,13 @@ void add_run(CLI::App& app, Args& a) {
   CLI::App& c = *app.add_subcommand("run", "run a study file: evaluate, sweep, optimize, pareto or reliability");
   add_file(c, a, "STUDY", "the study file (YAML, docs/studies.md)");
   add_set(c, a,
-          "override a key: problem.<key>=value the problem,\nany other key the study, e.g. --set "
-          "solver.max_evaluations=50");
+          "override a key: problem.<key>=value the problem, any\nother key the study "
+          "(e.g. solver.max_evaluations=50)");
   add_out(c, a, "out/<study name>");
   add_json(c, a, "the contents of\nDIR/summary.json");
-  add_threads(c, a, "all cores; 1 per MPI rank under mpirun");
+  add_threads(c, a, "all cores;\n1 per MPI rank under mpirun");
   c.add_flag("--resume", a.resume,
-             "continue the study recorded in DIR/evaluations.sqlite without\nredoing recorded evaluations");
+             "continue the study recorded in DIR/evaluations.sqlite\nwithout redoing recorded evaluations");
   c.add_flag("--progress", a.progress, "show the progress bar even when stderr is not a\nterminal");
   c.footer(
       "Every evaluation goes to DIR/evaluations.sqlite as it happens, then\n"
