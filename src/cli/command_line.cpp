@@ -191,6 +191,9 @@ std::unique_ptr<CLI::App> make_app(Args& a) {
   // Unknown arguments are collected, not thrown, so that the error can name
   // the command and suggest the nearest option.
   app->allow_extras();
+  // One command: the name of another after it is an argument too many, not
+  // a second command.
+  app->require_subcommand(0, 1);
   // A value given twice: the last one counts, as with most programs.
   app->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   // A flag takes no value: main.cpp looks for a bare --json before parsing,
@@ -202,6 +205,7 @@ std::unique_ptr<CLI::App> make_app(Args& a) {
   add_fe(*app, a);
   add_run(*app, a);
   app->add_subcommand("version", "print the version, as --version does");
+  app->add_subcommand("help", "list the commands, or with COMMAND its options, as --help does");
   for (CLI::App* c : app->get_subcommands([](CLI::App*) { return true; })) c->allow_extras()->group("Commands");
   app->footer(
       "'rackopt COMMAND --help' lists the options of a command, with examples.\n"
@@ -264,6 +268,23 @@ std::string did_you_mean(const std::string& given, const std::vector<std::string
   throw UsageError("unknown option " + option + (is_long ? did_you_mean(option, long_names(cmd)) : ""), name);
 }
 
+[[noreturn]] void refuse_command(CLI::App& app, const std::string& word) {
+  std::vector<std::string> commands;
+  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) commands.push_back(c->get_name());
+  const std::string near = nearest_name(word, commands);
+  throw UsageError("unknown command '" + word + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+}
+
+// `rackopt help [COMMAND]`: the help of the program or of COMMAND.
+std::string help_text(CLI::App& app, const std::vector<std::string>& words) {
+  if (words.empty()) return app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+  if (words.size() > 1) throw UsageError("unexpected argument " + words[1], "help");
+  const std::string& topic = words.front();
+  const std::vector<CLI::App*> found = app.get_subcommands([&topic](CLI::App* c) { return c->get_name() == topic; });
+  if (found.empty()) refuse_command(app, topic);
+  return found.front()->help(app.get_name());
+}
+
 // CLI11's wording of a value missing or given to a flag, in the words of the
 // other usage errors.
 std::string mismatch_message(const std::string& what) {
@@ -280,6 +301,11 @@ std::string mismatch_message(const std::string& what) {
 CommandLine parse_command_line(int argc, char** argv) {
   CommandLine line;
   const std::unique_ptr<CLI::App> app = make_app(line.args);
+  if (argc > 1 && std::string(argv[1]) == "help") {
+    // Before parsing: CLI11 would take the command named after it for a second command.
+    line.text = help_text(*app, std::vector<std::string>(argv + 2, argv + argc));
+    return line;
+  }
   try {
     app->parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -305,17 +331,12 @@ CommandLine parse_command_line(int argc, char** argv) {
     if (is_option(before.front())) {
       throw UsageError("unknown option " + before.front() + did_you_mean(before.front(), long_names(*app)));
     }
-    std::vector<std::string> commands;
-    for (const CLI::App* c : app->get_subcommands([](const CLI::App*) { return true; })) commands.push_back(c->get_name());
-    const std::string near = nearest_name(before.front(), commands);
-    throw UsageError("unknown command '" + before.front() + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    refuse_command(*app, before.front());
   }
   CLI::App& cmd = *chosen.front();
   line.args.command = cmd.get_name();
   if (!before.empty()) {
-    throw UsageError("unknown option " + before.front() + " before the command (options go after it: rackopt " +
-                         cmd.get_name() + " FILE " + before.front() + ")",
-                     cmd.get_name());
+    throw UsageError("option " + before.front() + " before the command; options go after it", cmd.get_name());
   }
   const std::vector<std::string> extra = cmd.remaining();
   if (!extra.empty()) refuse_extra(*app, cmd, extra.front());

@@ -60,6 +60,18 @@ TEST(CommandLine, EachCommandsHelpListsEveryOptionAndAnExample) {
   }
 }
 
+TEST(CommandLine, HelpCommandIsHelpOption) {
+  const CliResult top = run_cli("help");
+  EXPECT_EQ(top.code, 0);
+  EXPECT_EQ(top.out, run_cli("--help").out);
+  const CliResult fe = run_cli("help fe");
+  EXPECT_EQ(fe.code, 0);
+  EXPECT_EQ(fe.out, run_cli("fe --help").out);
+  const CliResult typo = run_cli("help wera");
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_NE(typo.err.find("unknown command 'wera'; did you mean 'wear'?"), std::string::npos) << typo.err;
+}
+
 TEST(CommandLine, VersionIsTheBuildsVersion) {
   for (const char* args : {"--version", "-V", "version"}) {
     const CliResult r = run_cli(args);
@@ -140,10 +152,14 @@ TEST(CommandLine, AMissingValueOrAMisplacedOptionIsAUsageError) {
   EXPECT_NE(missing.err.find("--samples needs a value"), std::string::npos) << missing.err;
   const CliResult before = run_cli("--json check problems/ship_lift.yaml");
   EXPECT_EQ(before.code, 2);
-  EXPECT_NE(before.err.find("options go after it"), std::string::npos) << before.err;
+  EXPECT_NE(before.err.find("option --json before the command; options go after it"), std::string::npos) << before.err;
   const CliResult extra = run_cli("check problems/ship_lift.yaml problems/rack_railway.yaml");
   EXPECT_EQ(extra.code, 2);
   EXPECT_NE(extra.err.find("unexpected argument problems/rack_railway.yaml"), std::string::npos) << extra.err;
+  // One command per line: a second command name is an argument too many, not ignored.
+  const CliResult second = run_cli("check problems/ship_lift.yaml stiffness");
+  EXPECT_EQ(second.code, 2);
+  EXPECT_NE(second.err.find("unexpected argument stiffness"), std::string::npos) << second.err;
   const CliResult flag_value = run_cli("check problems/ship_lift.yaml --json=false");
   EXPECT_EQ(flag_value.code, 2) << flag_value.err;
   EXPECT_NE(flag_value.err.find("--json takes no value"), std::string::npos) << flag_value.err;
