@@ -16,7 +16,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
           libgsl-dev libyaml-cpp-dev libsqlite3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
-          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev
+          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev libcli11-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 
 # Only for the sanitizer build and ./dev.sh fuzz: clang and its libFuzzer runtime.

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rackopt/output/folder_lock.hpp"
@@ -32,23 +33,34 @@ struct Args {
   bool extended_contact = false;  // --extended-contact (fe)
   bool pictures = false;          // --pictures (fe): mesh and deformed shape of the first position
   bool rack_supports = false;     // --rack-supports (fe)
-  std::vector<std::string> given;  // every --option given, in order, without "=value"
 };
 
 struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& message, std::string command_name = "")
+      : std::runtime_error(message), command(std::move(command_name)) {}
+  std::string command;  // the command whose command line is wrong; "" before one was recognised
 };
 
-// Parses argv; throws UsageError for unknown options or missing values.
-Args parse_args(int argc, char** argv);
+// What the command line asks for: a command to run, or a text to print on
+// stdout before exiting with kOk (--help, --version).
+struct CommandLine {
+  Args args;
+  std::string text;
+};
 
-// The options each command accepts, in one table (options.cpp). Throws
-// UsageError naming the option and the command when an option that does not
-// apply to a.command was given (options are never silently ignored).
-void check_options_apply(const Args& a);
+// Parses argv (command_line.cpp: every command, its options with their
+// meaning, range and default, and the help built from them). Throws
+// UsageError for an unknown command or option (with the nearest valid one),
+// an option the command does not accept, a missing FILE or a bad value:
+// options are never silently ignored.
+CommandLine parse_command_line(int argc, char** argv);
 
-// "--set, --out, --json": the options `command` accepts ("" for an unknown command).
-std::string accepted_options(const std::string& command);
+// `rackopt --help`: the commands, one line each.
+std::string program_help();
+
+// The candidate nearest to `given` ("--thread" -> "--threads"), or "" when
+// none is near enough to be a likely typo.
+std::string nearest_name(const std::string& given, const std::vector<std::string>& candidates);
 
 // render_plot lives in the library (rackopt/output/plot.hpp): studies plot too.
 using rackopt::render_plot;

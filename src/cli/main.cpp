@@ -1,13 +1,6 @@
-// rackopt command line.
-//
-//   rackopt check FILE [--set key=value]...
-//   rackopt stiffness FILE [--set key=value]... [--out DIR] [--json]
-//   rackopt wear FILE [--set key=value]... [--out DIR] [--json] [--samples N]
-//                [--seed S] [--threads N]
-//   rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]
-//               [--json] [--progress]
-//   rackopt fe FILE [--set key=value]... [--positions N] [--level L]
-//              [--extended-contact] [--pictures] [--rack-supports] [--out DIR] [--json] [--threads N]
+// rackopt command line: parses it (command_line.cpp; `rackopt --help`,
+// `rackopt COMMAND --help`, docs/cli.md), runs the command and maps its
+// outcome to an exit code.
 //
 // Exit codes (docs/output.md, "Exit codes"): 0 ok, 1 run failed (also a
 // result file that cannot be written), 2 bad input, a usage error or an
@@ -38,46 +31,6 @@ namespace {
 
 using namespace rackopt::cli;
 
-const char* kUsage =
-    "usage:\n"
-    "  rackopt check FILE [--set key=value]...\n"
-    "      validate a problem file and print the contact geometry\n"
-    "  rackopt stiffness FILE [--set key=value]... [--out DIR] [--json]\n"
-    "      mesh stiffness over one rack span: DIR/stiffness.csv, DIR/stiffness.png\n"
-    "      (default DIR: out/<problem name>); --json prints one JSON object on stdout\n"
-    "  rackopt wear FILE [--set key=value]... [--out DIR] [--json]\n"
-    "               [--samples N] [--seed S] [--threads N]\n"
-    "      Archard wear along both flanks, wear life, and life at reliability R by\n"
-    "      Monte Carlo (problem keys wear, duty, reliability; docs/yaml.md)\n"
-    "  rackopt fe FILE [--set key=value]... [--positions N] [--level L]\n"
-    "             [--extended-contact] [--pictures] [--rack-supports] [--out DIR] [--json]\n"
-    "             [--threads N]\n"
-    "      the analytic mesh model against finite elements (Gmsh + CalculiX ccx,\n"
-    "      Debian calculix-ccx) at N positions over one mesh period (default 4;\n"
-    "      1..64), FE level L (0 = coarsest, module/6; 0..6): DIR/fe.csv,\n"
-    "      DIR/fe.json, DIR/fe_stiffness.png (default DIR: out/<problem>_fe); --pictures:\n"
-    "      DIR/fe_mesh.png and DIR/fe_deformed.png of the first position;\n"
-    "      --rack-supports: the rack on its hinged supports in both codes (FE: the\n"
-    "      whole span; analytic: the coupled rack-span beam) instead of a rigid body;\n"
-    "      docs/fe.md\n"
-    "  rackopt run STUDY [--set key=value]... [--out DIR] [--threads N] [--resume]\n"
-    "              [--json] [--progress]\n"
-    "      run a study file (studies/*.yaml: evaluate, sweep, optimize, pareto,\n"
-    "      reliability); every evaluation goes to DIR/evaluations.sqlite as it\n"
-    "      happens, then DIR/summary.json, CSVs, plots and DIR/report.md\n"
-    "      (default DIR: out/<study name>). Ctrl-C stops cleanly and writes the\n"
-    "      results so far; --resume continues without redoing recorded evaluations.\n"
-    "      --set problem.<key>=value changes the problem, any other key the study\n"
-    "      (e.g. --set solver.max_evaluations=50); --progress shows the progress\n"
-    "      bar even when stderr is not a terminal\n"
-    "\n"
-    "  --set key=value   override any key of the problem, e.g. --set rack.span=\"1.2 m\"\n"
-    "exit codes: 0 ok (also a study with no feasible design), 1 run failed (also a\n"
-    "study whose every evaluation failed, or a result file that cannot be written),\n"
-    "2 bad input, usage error or output folder conflict (in use by another run,\n"
-    "holds another study), 130 stopped by Ctrl-C or SIGTERM (a second one quits at\n"
-    "once); docs/output.md\n";
-
 // The one JSON error object of --json: {"ok": false, "error": kind, "message": msg}.
 void print_json_error(const std::string& kind, const std::string& msg) {
   rackopt::JsonWriter j;
@@ -96,7 +49,7 @@ int mpi_worker(rackopt::mpi::MpiJob& job, int argc, char** argv) {
   std::unique_ptr<rackopt::study::StudyProblem> problem;
   unsigned threads = 1;
   try {
-    const Args args = parse_args(argc, argv);
+    const Args args = parse_command_line(argc, argv).args;
     if (args.threads > 0) threads = static_cast<unsigned>(args.threads);
     if (args.command == "run" && !args.file.empty()) {
       const rackopt::study::StudySpec spec = rackopt::studyfile::load_study_file(args.file, args.overrides);
@@ -131,37 +84,28 @@ int main(int argc, char** argv) {
     json = json || a == "--json";
     if (!a.empty() && a[0] != '-') args_command_empty = false;
   }
-  auto usage_error = [&](const std::string& msg) {
-    if (json) print_json_error("usage", msg);
-    // The whole usage only when there is no command to correct: otherwise the
-    // one line that says what is wrong is not buried under forty others.
-    std::cerr << "rackopt: " << msg << "\n";
+  CommandLine line;
+  try {
+    line = parse_command_line(argc, argv);
+  } catch (const UsageError& e) {
+    if (json) print_json_error("usage", e.what());
+    std::cerr << "rackopt: " << e.what() << "\n";
+    // The whole help only when there is no command to correct: otherwise the
+    // one line that says what is wrong is not buried under thirty others.
     if (args_command_empty) {
-      std::cerr << kUsage;
+      std::cerr << program_help();
+    } else if (e.command.empty()) {
+      std::cerr << "(rackopt --help lists the commands)\n";
     } else {
-      std::cerr << "(rackopt --help lists the commands and the options each accepts)\n";
+      std::cerr << "(rackopt " << e.command << " --help lists its options, with examples)\n";
     }
     return kBadInput;
-  };
-  Args args;
-  try {
-    args = parse_args(argc, argv);
-    check_options_apply(args);
-  } catch (const UsageError& e) {
-    return usage_error(e.what());
   }
-  if (args.command == "help") {
-    std::cerr << kUsage;
+  if (!line.text.empty()) {
+    std::cout << line.text;
     return kOk;
   }
-  if (args.command.empty()) return usage_error("no command given");
-  if (args.command != "check" && args.command != "stiffness" && args.command != "wear" && args.command != "run" &&
-      args.command != "fe") {
-    return usage_error("unknown command '" + args.command + "'");
-  }
-  if (args.file.empty()) {
-    return usage_error(args.command + " needs a " + (args.command == "run" ? "study" : "problem") + " FILE");
-  }
+  const Args& args = line.args;
   rackopt::install_interrupt_handlers(
       args.command == "run" ? "\nrackopt: stopping after the current evaluation (Ctrl-C again to quit at once)...\n"
                             : "\nrackopt: stopping (Ctrl-C again to quit at once)...\n");

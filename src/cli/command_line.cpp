@@ -1,0 +1,355 @@
+// The rackopt command line, declared with CLI11: each command with its
+// options, their meaning, range and default, and an example. The help, the
+// parsing and the usage errors all come from this one declaration, so they
+// cannot disagree.
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "rackopt/core/drive.hpp"
+#include "rackopt/fe/fe_comparison.hpp"
+#include "rackopt/version.hpp"
+
+namespace rackopt::cli {
+namespace {
+
+constexpr long kMaxThreads = 1024;
+constexpr long kMaxLevel = 6;  // FeOptions::level
+constexpr long kMaxSeed = 2147483647L;
+
+long parse_whole(const std::string& flag, const std::string& text, long lo, long hi) {
+  std::size_t used = 0;
+  long v = 0;
+  try {
+    v = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || v < lo || v > hi) {
+    throw UsageError(flag + " needs a whole number in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                     ", got '" + text + "'");
+  }
+  return v;
+}
+
+std::string range(long lo, long hi) { return std::to_string(lo) + ".." + std::to_string(hi); }
+
+// An option taking a whole number in lo..hi. The value is read as text and
+// checked here, so a bad one gets the same message whatever CLI11 thinks of
+// it ("-1" looks like an option to it, "two" is no number).
+template <class Store>
+void add_whole(CLI::App& cmd, const std::string& names, const std::string& metavar, long lo, long hi,
+               const std::string& meaning, Store store) {
+  const std::string flag = names.substr(names.rfind(',') + 1);
+  cmd.add_option_function<std::string>(
+         names, [flag, lo, hi, store](const std::string& text) { store(parse_whole(flag, text, lo, hi)); }, meaning)
+      ->type_name(metavar);
+}
+
+void add_file(CLI::App& cmd, Args& a, const std::string& name, const std::string& meaning) {
+  cmd.add_option(name, a.file, meaning)->required()->type_name("");
+}
+
+void add_set(CLI::App& cmd, Args& a, const std::string& meaning) {
+  // One KEY=VALUE per --set: a vector option would otherwise swallow the FILE after it.
+  cmd.add_option("-s,--set", a.overrides, meaning + ";\nrepeatable, applied in order")
+      ->type_name("KEY=VALUE")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+void add_out(CLI::App& cmd, Args& a, const std::string& default_dir) {
+  cmd.add_option("-o,--out", a.out_dir,
+                 "output folder (default " + default_dir + ");\nmade if missing, refused while another run uses it")
+      ->type_name("DIR");
+}
+
+void add_json(CLI::App& cmd, Args& a, const std::string& what) {
+  cmd.add_flag("--json", a.json,
+               "print one JSON object on stdout: " + what +
+                   ";\non an error {\"ok\": false, \"error\": kind, \"message\": text};\nthe text for people "
+                   "goes to stderr");
+}
+
+void add_threads(CLI::App& cmd, Args& a, const std::string& default_text) {
+  add_whole(cmd, "-j,--threads", "N", 1, kMaxThreads,
+            "worker threads, " + range(1, kMaxThreads) + " (default " + default_text + ")",
+            [&a](long v) { a.threads = static_cast<int>(v); });
+}
+
+const char* kProblemSet = "override a key of the problem (docs/yaml.md),\ne.g. --set rack.span=\"1.2 m\"";
+
+void add_check(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand("check", "validate a problem file and print the contact geometry");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md)");
+  add_set(c, a, kProblemSet);
+  add_json(c, a,
+           "ok, contact_ratio,\npressure_angle_range {lower, upper [rad], lower_limit,\nupper_limit: what bounds "
+           "each end} and warnings");
+  c.footer(
+      "Prints the geometry (contact ratio, undercut, the pressure angles the cutter\n"
+      "allows) and \"ok: FILE\"; exit 2 with file:line:column and key for a bad file.\n"
+      "Examples:\n"
+      "  rackopt check problems/ship_lift.yaml\n"
+      "  rackopt check problems/rack_railway.yaml --set pinion.teeth=24 --json");
+}
+
+void add_stiffness(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand("stiffness", "mesh stiffness, ripple and transmission error over one rack span");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md)");
+  add_set(c, a, kProblemSet);
+  add_out(c, a, "out/<problem file name>");
+  add_json(c, a,
+           "the stiffness figures,\nzones, ripple, transmission error, files and timings\n(docs/output.md)");
+  c.footer(
+      "Writes DIR/stiffness.csv and DIR/stiffness.png.\n"
+      "Examples:\n"
+      "  rackopt stiffness problems/rack_railway.yaml --set rack.span=\"1.2 m\" --out=out/span\n"
+      "  rackopt stiffness problems/ship_lift.yaml -o out/ship_lift --json");
+}
+
+void add_wear(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand("wear", "Archard wear of both flanks, wear life and life at reliability R");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md;\nkeys wear, duty, reliability)");
+  add_set(c, a, kProblemSet);
+  add_out(c, a, "out/<problem file name>_wear");
+  add_json(c, a, "the wear, the lives\nand the files (docs/output.md)");
+  add_whole(c, "-n,--samples", "N", 1, kMaxReliabilitySamples,
+            "Monte Carlo samples, " + range(1, kMaxReliabilitySamples) + "\n(default reliability.samples)",
+            [&a](long v) { a.samples = v; });
+  add_whole(c, "--seed", "S", 0, kMaxSeed, "random seed, " + range(0, kMaxSeed) + "\n(default reliability.seed)",
+            [&a](long v) { a.seed = v; });
+  add_threads(c, a, "all cores");
+  c.footer(
+      "Writes DIR/wear_profile.csv and, with reliability inputs, life_samples.csv,\n"
+      "reliability.csv, life_histogram.csv and plots. The same seed gives the same\n"
+      "lives on any number of threads.\n"
+      "Examples:\n"
+      "  rackopt wear problems/ship_lift.yaml --samples 1000 --json\n"
+      "  rackopt wear problems/ship_lift.yaml -n 200 --seed 7 -j 2 -o out/ship_lift_wear");
+}
+
+void add_fe(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand("fe", "the analytic mesh model against finite elements (Gmsh + CalculiX)");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md)");
+  add_set(c, a, kProblemSet);
+  add_out(c, a, "out/<problem file name>_fe");
+  add_json(c, a, "the contents of\nDIR/fe.json (docs/fe.md)");
+  add_whole(c, "-p,--positions", "N", 1, fe::kMaxFePositions,
+            "travel positions over one mesh period,\n" + range(1, fe::kMaxFePositions) + " (default 4)",
+            [&a](long v) { a.positions = static_cast<int>(v); });
+  add_whole(c, "-l,--level", "L", 0, kMaxLevel,
+            "FE mesh level, " + range(0, kMaxLevel) + " (default 0: the coarsest,\nelements of module/6)",
+            [&a](long v) { a.level = static_cast<int>(v); });
+  c.add_flag("--extended-contact", a.extended_contact,
+             "also let the flanks next to the theoretical pairs touch;\ntheir load is reported, not compared");
+  c.add_flag("--pictures", a.pictures, "DIR/fe_mesh.png and DIR/fe_deformed.png of the first\nposition");
+  c.add_flag("--rack-supports", a.rack_supports,
+             "the rack on its hinged supports in both codes (FE: the\nwhole span; analytic: the coupled rack-span "
+             "beam)\ninstead of a rigid body");
+  add_threads(c, a, "all cores");
+  c.footer(
+      "Needs CalculiX ccx (Debian calculix-ccx) and the Gmsh library (libgmsh-dev).\n"
+      "Writes DIR/fe.csv, DIR/fe.json and DIR/fe_stiffness.png; docs/fe.md.\n"
+      "Examples:\n"
+      "  rackopt fe problems/gantry_axis.yaml --positions 4\n"
+      "  rackopt fe problems/gantry_axis.yaml -p 8 -l 1 --pictures -o out/gantry_fe");
+}
+
+void add_run(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand("run", "run a study file: evaluate, sweep, optimize, pareto or reliability");
+  add_file(c, a, "STUDY", "the study file (YAML, docs/studies.md)");
+  add_set(c, a,
+          "override a key: problem.<key>=value the problem, any\nother key the study "
+          "(e.g. solver.max_evaluations=50)");
+  add_out(c, a, "out/<study name>");
+  add_json(c, a, "the contents of\nDIR/summary.json");
+  add_threads(c, a, "all cores;\n1 per MPI rank under mpirun");
+  c.add_flag("--resume", a.resume,
+             "continue the study recorded in DIR/evaluations.sqlite\nwithout redoing recorded evaluations");
+  c.add_flag("--progress", a.progress, "show the progress bar even when stderr is not a\nterminal");
+  c.footer(
+      "Every evaluation goes to DIR/evaluations.sqlite as it happens, then\n"
+      "DIR/summary.json, CSVs, plots and DIR/report.md. Ctrl-C stops cleanly and\n"
+      "writes the results so far.\n"
+      "Examples:\n"
+      "  rackopt run studies/rack_railway_sizing.yaml --set solver.max_evaluations=50\n"
+      "  rackopt run studies/ship_lift_wear_tradeoff.yaml -j 4 -o out/ship_lift_front --resume\n"
+      "  mpirun -np 2 rackopt run studies/ship_lift_four_objectives.yaml --out out/four_mpi");
+}
+
+std::unique_ptr<CLI::App> make_app(Args& a) {
+  auto app = std::make_unique<CLI::App>("rackopt: design analysis and optimization of rack-and-pinion drives", "rackopt");
+  app->get_formatter()->label("Usage", "usage");
+  app->get_formatter()->column_width(26);
+  app->get_formatter()->label("SUBCOMMAND", "COMMAND");
+  app->set_version_flag("-V,--version", std::string("rackopt ") + RACKOPT_VERSION_STRING);
+  // Unknown arguments are collected, not thrown, so that the error can name
+  // the command and suggest the nearest option.
+  app->allow_extras();
+  // One command: the name of another after it is an argument too many, not
+  // a second command.
+  app->require_subcommand(0, 1);
+  // A value given twice: the last one counts, as with most programs.
+  app->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  // A flag takes no value: main.cpp looks for a bare --json before parsing,
+  // to make a usage error a JSON object too.
+  app->option_defaults()->disable_flag_override();
+  add_check(*app, a);
+  add_stiffness(*app, a);
+  add_wear(*app, a);
+  add_fe(*app, a);
+  add_run(*app, a);
+  app->add_subcommand("version", "print the version, as --version does");
+  app->add_subcommand("help", "list the commands, or with COMMAND its options, as --help does");
+  for (CLI::App* c : app->get_subcommands([](CLI::App*) { return true; })) c->allow_extras()->group("Commands");
+  app->footer(
+      "'rackopt COMMAND --help' lists the options of a command, with examples.\n"
+      "exit codes: 0 ok (also a study with no feasible design), 1 run failed (also a\n"
+      "study whose every evaluation failed, or a result file that cannot be written),\n"
+      "2 bad input, usage error or output folder conflict (in use by another run,\n"
+      "holds another study), 130 stopped by Ctrl-C or SIGTERM (a second one quits at\n"
+      "once); docs/output.md, docs/cli.md");
+  return app;
+}
+
+std::string selected_command(CLI::App& app) {
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  return chosen.empty() ? std::string() : chosen.front()->get_name();
+}
+
+bool is_option(const std::string& s) { return s.size() > 1 && s[0] == '-'; }
+
+std::vector<std::string> long_names(const CLI::App& cmd) {
+  std::vector<std::string> names;
+  for (const CLI::Option* o : cmd.get_options()) {
+    for (const std::string& n : o->get_lnames()) names.push_back("--" + n);
+  }
+  return names;
+}
+
+// "--set, --out, --json": what `cmd` accepts besides --help.
+std::string accepted_options(const CLI::App& cmd) {
+  std::string out;
+  for (const CLI::Option* o : cmd.get_options()) {
+    if (!o->nonpositional() || o == cmd.get_help_ptr() || o->get_lnames().empty()) continue;
+    out += (out.empty() ? "--" : ", --") + o->get_lnames().front();
+  }
+  return out;
+}
+
+std::string did_you_mean(const std::string& given, const std::vector<std::string>& candidates) {
+  const std::string near = nearest_name(given, candidates);
+  return near.empty() ? std::string() : "; did you mean " + near + "?";
+}
+
+// The first argument `cmd` did not take, as a usage error: an option of
+// another command, an unknown option (with the nearest one), or an argument
+// too many.
+[[noreturn]] void refuse_extra(CLI::App& app, const CLI::App& cmd, const std::string& extra) {
+  const std::string name = cmd.get_name();
+  if (!is_option(extra)) throw UsageError("unexpected argument " + extra, name);
+  const std::string option = extra.substr(0, extra.find('='));
+  for (const CLI::App* other : app.get_subcommands([](const CLI::App*) { return true; })) {
+    for (const CLI::Option* o : other->get_options()) {
+      if (o->nonpositional() && o->check_name(option)) {
+        const std::string accepted = accepted_options(cmd);
+        throw UsageError("option " + option + " does not apply to '" + name + "' (" + name +
+                             (accepted.empty() ? " takes no options)" : " accepts " + accepted + ")"),
+                         name);
+      }
+    }
+  }
+  const bool is_long = option.rfind("--", 0) == 0;
+  throw UsageError("unknown option " + option + (is_long ? did_you_mean(option, long_names(cmd)) : ""), name);
+}
+
+[[noreturn]] void refuse_command(CLI::App& app, const std::string& word) {
+  std::vector<std::string> commands;
+  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) commands.push_back(c->get_name());
+  const std::string near = nearest_name(word, commands);
+  throw UsageError("unknown command '" + word + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+}
+
+// `rackopt help [COMMAND]`: the help of the program or of COMMAND.
+std::string help_text(CLI::App& app, const std::vector<std::string>& words) {
+  if (words.empty()) return app.get_formatter()->make_help(&app, app.get_name(), CLI::AppFormatMode::Normal);
+  if (words.size() > 1) throw UsageError("unexpected argument " + words[1], "help");
+  const std::string& topic = words.front();
+  const std::vector<CLI::App*> found = app.get_subcommands([&topic](CLI::App* c) { return c->get_name() == topic; });
+  if (found.empty()) refuse_command(app, topic);
+  return found.front()->help(app.get_name());
+}
+
+// CLI11's wording of a value missing or given to a flag, in the words of the
+// other usage errors.
+std::string mismatch_message(const std::string& what) {
+  auto ends_with = [&what](const std::string& end) {
+    return what.size() > end.size() && what.compare(what.size() - end.size(), end.size(), end) == 0;
+  };
+  if (ends_with(" missing")) return what.substr(0, what.find(':')) + " needs a value";  // "--out: 1 required DIR missing"
+  if (ends_with(" was given a disallowed flag override")) return "--" + what.substr(0, what.find(' ')) + " takes no value";
+  return what;
+}
+
+}  // namespace
+
+CommandLine parse_command_line(int argc, char** argv) {
+  CommandLine line;
+  const std::unique_ptr<CLI::App> app = make_app(line.args);
+  if (argc > 1 && std::string(argv[1]) == "help") {
+    // Before parsing: CLI11 would take the command named after it for a second command.
+    line.text = help_text(*app, std::vector<std::string>(argv + 2, argv + argc));
+    return line;
+  }
+  try {
+    app->parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    line.text = app->help();  // the selected command's, if one was given
+    return line;
+  } catch (const CLI::CallForVersion& e) {
+    line.text = std::string(e.what()) + "\n";
+    return line;
+  } catch (const CLI::RequiredError&) {  // the only required argument is a command's FILE
+    const std::string cmd = selected_command(*app);
+    throw UsageError(cmd + " needs a " + (cmd == "run" ? "study" : "problem") + " FILE", cmd);
+  } catch (const CLI::ArgumentMismatch& e) {
+    throw UsageError(mismatch_message(e.what()), selected_command(*app));
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what(), selected_command(*app));
+  } catch (const UsageError& e) {  // a bad value (add_whole): it knows no command
+    throw UsageError(e.what(), selected_command(*app));
+  }
+  const std::vector<std::string> before = app->remaining();
+  const std::vector<CLI::App*> chosen = app->get_subcommands();
+  if (chosen.empty()) {
+    if (before.empty()) throw UsageError("no command given");
+    if (is_option(before.front())) {
+      throw UsageError("unknown option " + before.front() + did_you_mean(before.front(), long_names(*app)));
+    }
+    refuse_command(*app, before.front());
+  }
+  CLI::App& cmd = *chosen.front();
+  line.args.command = cmd.get_name();
+  if (!before.empty()) {
+    throw UsageError("option " + before.front() + " before the command; options go after it", cmd.get_name());
+  }
+  const std::vector<std::string> extra = cmd.remaining();
+  if (!extra.empty()) refuse_extra(*app, cmd, extra.front());
+  if (line.args.command == "version") {
+    line.text = std::string("rackopt ") + RACKOPT_VERSION_STRING + "\n";
+    line.args.command.clear();
+  }
+  return line;
+}
+
+std::string program_help() {
+  Args unused;
+  return make_app(unused)->help();
+}
+
+}  // namespace rackopt::cli
