@@ -13,7 +13,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 
 PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
           libgsl-dev libyaml-cpp-dev libsqlite3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
-          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev)
+          libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev
+          libcmark-gfm-dev libcmark-gfm-extensions-dev)
 
 # Only for the sanitizer build and ./dev.sh fuzz: clang and its libFuzzer runtime.
 SANITIZE_PACKAGES=(clang libclang-rt-14-dev)

@@ -132,20 +132,6 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
   EXPECT_EQ(j["description"], spec.description);
 }
 
-StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t chosen) {
-  StudyResult r;
-  r.status = study::StudyStatus::kOk;
-  for (std::size_t k = 0; k < points; ++k) {
-    const double t = static_cast<double>(k) / static_cast<double>(points - 1);
-    r.front.push_back(design(spec, 0.02 + 0.012 * t, 3.0 - 1.8 * t, "eps " + std::to_string(k)));
-  }
-  r.chosen = chosen;
-  r.evaluations = 200;
-  r.seconds = 1.0;
-  r.best_history = std::vector<double>(200, 0.3);
-  return r;
-}
-
 TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
   StudySpec spec = base_spec(StudyKind::kPareto);
   spec.objectives.push_back(objective("supports_per_metre"));
