@@ -20,12 +20,6 @@
 
 namespace {
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
-  return n;
-}
-
 // The image targets of report.md: `![alt](target)`.
 std::vector<std::string> markdown_images(const std::string& md) {
   std::vector<std::string> out;
@@ -78,8 +72,8 @@ void expect_self_contained(const std::string& dir) {
   }
   // Each image of report.md is a figure with its SVG (the PNG stays a link in the file list).
   const std::string md = read_text(dir + "/report.md");
-  EXPECT_EQ(occurrences(html, "<svg"), markdown_images(md).size());
-  EXPECT_EQ(occurrences(html, "<figure class=\"plot\">"), markdown_images(md).size());
+  EXPECT_EQ(occurrences_of(html, "<svg"), markdown_images(md).size());
+  EXPECT_EQ(occurrences_of(html, "<figure class=\"plot\">"), markdown_images(md).size());
 }
 
 TEST(ReportHtml, ParetoReportHasItsTablesAndEveryPlotInline) {
@@ -97,7 +91,7 @@ TEST(ReportHtml, ParetoReportHasItsTablesAndEveryPlotInline) {
   const std::string md = read_text(dir + "/report.md");
   EXPECT_NE(md.find("](pareto.png)"), std::string::npos);
   EXPECT_NE(md.find("](history.png)"), std::string::npos);
-  EXPECT_EQ(occurrences(html, "<svg"), 2u);
+  EXPECT_EQ(occurrences_of(html, "<svg"), 2u);
   EXPECT_EQ(html.find("<?xml"), std::string::npos);
   EXPECT_NE(html.find("<figcaption>"), std::string::npos);
   // Each plot's ids are its own: the point symbols two plots define alike.
@@ -121,7 +115,7 @@ TEST(ReportHtml, WithoutGnuplotThePageHasNoPlotsAndSaysWhy) {
   ::unsetenv("RACKOPT_GNUPLOT");
   expect_self_contained(dir);
   const std::string html = read_text(dir + "/report.html");
-  EXPECT_EQ(occurrences(html, "<svg"), 0u);
+  EXPECT_EQ(occurrences_of(html, "<svg"), 0u);
   EXPECT_NE(html.find("/nonexistent/gnuplot-for-rackopt-tests not found"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir + "/pareto.svg"));
 }
@@ -219,8 +213,8 @@ TEST(ReportHtmlInChromium, TheBrowsersDomHoldsTheTablesAndThePlots) {
     EXPECT_NE(html.find("<figcaption>"), std::string::npos);
   }
   const std::size_t plots = markdown_images(read_text(dir + "/report.md")).size();
-  EXPECT_EQ(occurrences(html, "<svg"), plots);
-  EXPECT_EQ(occurrences(html, "<svg"), gnuplot_available() ? 2u : 0u);
+  EXPECT_EQ(occurrences_of(html, "<svg"), plots);
+  EXPECT_EQ(occurrences_of(html, "<svg"), gnuplot_available() ? 2u : 0u);
   EXPECT_EQ(html.find("<img"), std::string::npos);
 }
 

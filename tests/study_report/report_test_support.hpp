@@ -156,6 +156,13 @@ StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t
   return r;
 }
 
+// How often `what` occurs in `text` (not overlapping).
+std::size_t occurrences_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
 // Every link target of report.md, relative to its folder.
 std::vector<std::string> markdown_links(const std::string& md) {
   // (no std::regex: GCC 12 warns inside it under the sanitizer build)

@@ -198,7 +198,9 @@ TEST(StudyReport, FrontPlotFindsTheObjectivesInTheRecordsCsv) {
   }
   r.evaluations_csv_path = dir + "/evaluations.csv";
   write_study_report(spec, r, dir);
-  EXPECT_NE(read_text(dir + "/pareto.gp").find("title 'every evaluation'"), std::string::npos);
+  const std::string gp = read_text(dir + "/pareto.gp");
+  EXPECT_NE(gp.find("keyentry with points pt 7 ps 1 lc rgb '#c8c8c8' title 'every evaluation'"), std::string::npos);
+  EXPECT_NE(gp.find("'evaluations.csv' skip 1 using"), std::string::npos);
 }
 
 TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
@@ -209,7 +211,12 @@ TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
   const std::string dir = scratch_path("pareto3");
   const StudyReport rep = write_study_report(spec, r, dir);
   const std::string gp = read_text(dir + "/pareto.gp");
-  EXPECT_NE(gp.find("multiplot layout 1,3"), std::string::npos);
+  EXPECT_NE(gp.find("# 3 projections: 1 row of 3\n"), std::string::npos);
+  // One legend for the three panels, below them.
+  EXPECT_EQ(occurrences_of(gp, "'front.csv' skip 1 using"), 3u);
+  EXPECT_EQ(occurrences_of(gp, "title 'Pareto front'"), 1u);
+  EXPECT_EQ(occurrences_of(gp, "title 'chosen design'"), 1u);
+  EXPECT_EQ(occurrences_of(gp, "title 'every evaluation'"), 0u);  // no evaluations.csv here
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["front"][0]["objectives"][2]["sense"], "maximize");
   if (gnuplot_available()) {
@@ -265,7 +272,10 @@ TEST(StudyReport, FourObjectiveFrontIsPlottedAsSixProjections) {
   const StudyResult r = pareto_result(spec, 9, 0);
   const std::string dir = scratch_path("pareto4");
   write_study_report(spec, r, dir);
-  EXPECT_NE(read_text(dir + "/pareto.gp").find("multiplot layout 2,3"), std::string::npos);
+  const std::string gp = read_text(dir + "/pareto.gp");
+  EXPECT_NE(gp.find("# 6 projections: 2 rows of 3\n"), std::string::npos);
+  EXPECT_EQ(occurrences_of(gp, "'front.csv' skip 1 using"), 6u);
+  EXPECT_EQ(occurrences_of(gp, "title 'Pareto front'"), 1u);
 }
 
 TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {

@@ -96,18 +96,33 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b) pairs.emplace_back(a, b);
   const std::size_t rows = pairs.size() > 3 ? 2 : 1, columns = (pairs.size() + rows - 1) / rows;
+  const int width = n == 2 ? 1100 : 600 * static_cast<int>(columns);
+  const int height = n == 2 ? 800 : 650 * static_cast<int>(rows);
   std::ostringstream o;
-  o << gp_header("pareto.png", n == 2 ? 1100 : 600 * static_cast<int>(columns),
-                 n == 2 ? 800 : 650 * static_cast<int>(rows));
-  o << "set key outside bottom center horizontal\n";
-  if (pairs.size() > 1) {
-    o << "set multiplot layout " << rows << "," << columns << " title "
-      << gnuplot_quote(spec.name + ": Pareto front") << "\n";
-  } else {
-    o << "set title " << gnuplot_quote(spec.name + ": Pareto front") << "\n";
-  }
+  o << gp_header("pareto.png", width, height);
+  o << "# " << pairs.size() << (pairs.size() == 1 ? " projection" : " projections") << ": " << rows
+    << (rows == 1 ? " row" : " rows") << " of " << columns << "\n";
+  // The panels are placed by hand (screen margins in pixels of the image),
+  // leaving a band at the bottom for one legend shared by all of them: a
+  // legend per panel repeated the same three entries, squeezed under each
+  // x label in two rows.
+  constexpr double kTitleBand = 45, kLegendBand = 50, kLeft = 85, kRight = 25, kBelow = 55, kAbove = 10;
+  const double cell_w = static_cast<double>(width) / static_cast<double>(columns);
+  const double cell_h = (height - kTitleBand - kLegendBand) / static_cast<double>(rows);
+  auto screen = [](double pixels, int size) {
+    std::ostringstream s;
+    s << "screen " << std::min(1.0, std::max(0.0, pixels / size));
+    return s.str();
+  };
+  o << "set multiplot title " << gnuplot_quote(spec.name + ": Pareto front") << " font ',14'\nunset key\n";
   const int chosen = front.col("chosen");
-  for (const auto& [a, b] : pairs) {
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const std::size_t a = pairs[p].first, b = pairs[p].second;
+    const double left = static_cast<double>(p % columns) * cell_w;
+    const double top = height - kTitleBand - static_cast<double>(p / columns) * cell_h;
+    o << "set lmargin at " << screen(left + kLeft, width) << "\nset rmargin at " << screen(left + cell_w - kRight, width)
+      << "\nset tmargin at " << screen(top - kAbove, height) << "\nset bmargin at "
+      << screen(top - cell_h + kBelow, height) << "\n";
     o << "set xlabel " << gnuplot_quote(axis_label(spec.objectives[a].label, unit[a].display)) << "\n";
     o << "set ylabel " << gnuplot_quote(axis_label(spec.objectives[b].label, unit[b].display)) << "\n";
     o << "plot ";
@@ -122,15 +137,26 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
         return e.str();
       };
       o << gnuplot_quote(eval_name) << " skip 1 using " << ev(a) << ":" << ev(b)
-        << " with points pt 7 ps 0.5 lc rgb '#c8c8c8' title 'every evaluation', \\\n     ";
+        << " with points pt 7 ps 0.5 lc rgb '#c8c8c8' notitle, \\\n     ";
     }
     o << "'front.csv' skip 1 using " << gp_value(col[a], unit[a].factor) << ":" << gp_value(col[b], unit[b].factor)
       // a 2-objective front sorted by objective 0 is a curve; projections of a 3-objective one are not
-      << (n == 2 ? " with linespoints" : " with points") << " pt 7 ps 1.2 lc rgb '#1f77b4' title 'front', \\\n     "
+      << (n == 2 ? " with linespoints" : " with points") << " pt 7 ps 1.2 lc rgb '#1f77b4' notitle, \\\n     "
       << "'' skip 1 using " << gp_value(col[a], unit[a].factor, chosen) << ":"
-      << gp_value(col[b], unit[b].factor, chosen) << " with points pt 6 ps 3.5 lw 3 lc rgb '#d62728' title 'chosen'\n";
+      << gp_value(col[b], unit[b].factor, chosen) << " with points pt 6 ps 3.5 lw 3 lc rgb '#d62728' notitle\n";
   }
-  if (pairs.size() > 1) o << "unset multiplot\n";
+  // The legend: a frameless plot across the bottom band holding only the key
+  // (a key belongs to one panel, and gnuplot wraps it to that panel's width).
+  o << "set lmargin at screen 0.02\nset rmargin at screen 0.98\nset bmargin at screen 0\nset tmargin at "
+    << screen(kLegendBand, height) << "\n";
+  o << "unset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\nset xrange [0:1]\nset yrange [0:1]\n";
+  o << "set key center center horizontal font ',13' reverse Left samplen 1.5 width 2\n";
+  o << "plot NaN notitle";
+  if (!ecols.empty()) o << ", \\\n     keyentry with points pt 7 ps 1 lc rgb '#c8c8c8' title 'every evaluation'";
+  o << ", \\\n     keyentry with " << (n == 2 ? "linespoints" : "points")
+    << " pt 7 ps 1.5 lc rgb '#1f77b4' title 'Pareto front', \\\n"
+       "     keyentry with points pt 6 ps 2.5 lw 3 lc rgb '#d62728' title 'chosen design'\n";
+  o << "unset multiplot\n";
   return o.str();
 }
 
