@@ -35,12 +35,12 @@ std::string render_plot_svg(const std::string& dir, const std::string& script, c
                             std::vector<std::string>& warnings);
 
 // The terminal and output lines every plot script starts with: a PNG of
-// `width` x `height` pixels into `png_tmp` (the name render_plot expects,
+// `width` x `height` pixels, text `font_size` pixels high, into `png_tmp` (the name render_plot expects,
 // "<name>.png.tmp"); when gnuplot runs with rackopt_svg defined
 // (render_plot_svg), the same plot as a standalone SVG of the same size into
 // "<name>.svg.tmp". One script for both: the PNG and the SVG cannot drift
 // apart, and the script stays runnable by hand (`gnuplot x.gp`).
-std::string gnuplot_terminal(const std::string& png_tmp, int width, int height);
+std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size = 11);
 
 // Seconds one gnuplot run may take: RACKOPT_PLOT_TIMEOUT (a positive number)
 // when set, else 60.

@@ -3,9 +3,11 @@
 #include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <memory>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -29,11 +31,14 @@ code { font-family: ui-monospace, SFMono-Regular, Menlo, Consolas, monospace; fo
        background: #f3f5f7; padding: .1em .3em; border-radius: 3px; }
 pre { background: #f6f8fa; padding: .8em 1em; overflow-x: auto; border-radius: 4px; }
 pre code { background: none; padding: 0; }
-figure.plot { margin: 1.5em 0 .3em; }
+body { overflow-x: hidden; }
+figure.plot { margin: 1.5em 0 .3em; width: calc(100vw - 3rem); position: relative; left: 50%;
+              transform: translateX(-50%); }
 figure.plot svg { display: block; width: 100%; height: auto; border: 1px solid #e1e4e8; }
 figcaption { font-weight: 600; margin-top: .4em; }
 figure.plot + p { margin-top: .2em; color: #444; }
-@media print { main { max-width: none; } figure.plot { break-inside: avoid; } }
+@media print { main { max-width: none; }
+               figure.plot { width: 100%; left: 0; transform: none; break-inside: avoid; } }
 )";
 
 struct NodeFree {
@@ -121,6 +126,18 @@ std::string without_fixed_size(const std::string& tag) {
     }
   }
   return out;
+}
+
+// The width of the SVG's viewBox ("" when it has none): the figure is shown
+// at most that wide, its drawn size.
+std::string view_box_width(const std::string& svg) {
+  const std::size_t end = svg.find('>');
+  const std::size_t at = svg.find("viewBox=\"");
+  if (at == std::string::npos || at > end) return "";
+  std::istringstream in(svg.substr(at + 9, svg.find('"', at + 9) - at - 9));
+  double x = 0, y = 0, w = 0;
+  if (!(in >> x >> y >> w) || !(w > 0) || w > 1e5) return "";
+  return std::to_string(static_cast<long>(std::lround(w)));
 }
 
 }  // namespace
@@ -236,8 +253,12 @@ std::string report_html(const std::string& markdown, const std::string& title,
       replace(image, link);
       continue;
     }
-    const std::string figure = "<figure class=\"plot\">\n" + svg->second + "\n<figcaption>" + html_escape(alt) +
-                               "</figcaption>\n</figure>\n";
+    // On a wide window a figure may grow past the text's column, up to its
+    // drawn size: the multi-panel plots are wide.
+    const std::string w = view_box_width(svg->second);
+    const std::string figure = "<figure class=\"plot\"" +
+                               (w.empty() ? std::string() : " style=\"max-width: " + w + "px\"") + ">\n" +
+                               svg->second + "\n<figcaption>" + html_escape(alt) + "</figcaption>\n</figure>\n";
     cmark_node* parent = cmark_node_parent(image);
     const bool alone = parent != nullptr && cmark_node_get_type(parent) == CMARK_NODE_PARAGRAPH &&
                        cmark_node_first_child(parent) == image && cmark_node_next(image) == nullptr;
