@@ -17,7 +17,7 @@ PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev 
           libcmark-gfm-dev libcmark-gfm-extensions-dev
           chromium)
 # chromium: only for the test that opens a study's report.html in a browser
-# (ReportHtmlInChromium, about 5 s; skipped without it); 81 MB to download,
+# (ReportHtmlInChromium, about 4 s; skipped without it); 81 MB to download,
 # about 300 MB installed, once (docs/output.md, "report.html").
 
 # Only for the sanitizer build and ./dev.sh fuzz: clang and its libFuzzer runtime.
