@@ -132,14 +132,16 @@ std::string render_plot_svg(const std::string& dir, const std::string& script, c
 
 std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size) {
   const std::string suffix = ".png.tmp";
-  const bool png_name = png_tmp.size() > suffix.size() && png_tmp.compare(png_tmp.size() - suffix.size(), suffix.size(), suffix) == 0;
-  const std::string svg_tmp = png_name ? png_tmp.substr(0, png_tmp.size() - suffix.size()) + ".svg.tmp" : png_tmp + ".svg";
+  const bool png_name = png_tmp.size() > suffix.size() &&
+                        png_tmp.compare(png_tmp.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const std::string stem = png_name ? png_tmp.substr(0, png_tmp.size() - suffix.size()) : png_tmp;
   const std::string size = std::to_string(width) + "," + std::to_string(height);
   const std::string font = std::to_string(font_size);
   // noenhanced: labels are metric keys with underscores, not subscripts.
   return "if (exists('rackopt_svg')) {\n"
-         "  set terminal svg size " + size + " standalone noenhanced font 'sans-serif," + font + "' background rgb 'white'\n"
-         "  set output " + gnuplot_quote(svg_tmp) + "\n"
+         "  set terminal svg size " + size + " standalone noenhanced font 'sans-serif," + font +
+         "' background rgb 'white'\n"
+         "  set output " + gnuplot_quote(stem + ".svg.tmp") + "\n"
          "} else {\n"
          "  set terminal pngcairo size " + size + " noenhanced font '," + font + "'\n"
          "  set output " + gnuplot_quote(png_tmp) + "\n"

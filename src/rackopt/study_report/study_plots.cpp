@@ -109,8 +109,8 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
     << (rows == 1 ? " row" : " rows") << " of " << columns << "\n";
   // The panels are placed by hand (screen margins in pixels of the image),
   // leaving a band at the bottom for one legend shared by all of them: a
-  // legend per panel repeated the same three entries, squeezed under each
-  // x label in two rows.
+  // legend per panel would repeat the same entries, squeezed under each x
+  // label.
   const double title_band = 45 * scale, legend_band = 50 * scale, pad_left = 85 * scale, pad_right = 25,
                pad_below = 55 * scale, pad_above = 10 * scale;
   const double cell_w = static_cast<double>(width) / static_cast<double>(columns);
@@ -127,9 +127,9 @@ std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, cons
     const std::size_t a = pairs[p].first, b = pairs[p].second;
     const double left = static_cast<double>(p % columns) * cell_w;
     const double top = height - title_band - static_cast<double>(p / columns) * cell_h;
-    o << "set lmargin at " << screen(left + pad_left, width) << "\nset rmargin at " << screen(left + cell_w - pad_right, width)
-      << "\nset tmargin at " << screen(top - pad_above, height) << "\nset bmargin at "
-      << screen(top - cell_h + pad_below, height) << "\n";
+    o << "set lmargin at " << screen(left + pad_left, width) << "\nset rmargin at "
+      << screen(left + cell_w - pad_right, width) << "\nset tmargin at " << screen(top - pad_above, height)
+      << "\nset bmargin at " << screen(top - cell_h + pad_below, height) << "\n";
     o << "set xlabel " << gnuplot_quote(axis_label(spec.objectives[a].label, unit[a].display)) << "\n";
     o << "set ylabel " << gnuplot_quote(axis_label(spec.objectives[b].label, unit[b].display)) << "\n";
     o << "plot ";
