@@ -15,7 +15,8 @@ namespace rackopt::study_report {
 namespace {
 
 // Small enough to read in the source, enough for tables that line up, plots
-// that scale with the window and a page that prints.
+// that scale with the window and a page that prints. A table whose header
+// row is empty (report.md's two-column design tables) shows no header.
 constexpr const char* kStyle = R"(
 body { font-family: system-ui, -apple-system, "Segoe UI", Roboto, "Helvetica Neue", Arial, sans-serif;
        line-height: 1.5; color: #1b1b1b; background: #fff; margin: 0; }
@@ -26,6 +27,7 @@ table { border-collapse: collapse; margin: 1em 0; font-variant-numeric: tabular-
         display: block; overflow-x: auto; max-width: 100%; }
 th, td { border: 1px solid #d0d7de; padding: .3em .7em; text-align: left; vertical-align: top; }
 thead th { background: #f3f5f7; }
+thead:not(:has(th:not(:empty))) { display: none; }
 tbody tr:nth-child(even) { background: #fafbfc; }
 code { font-family: ui-monospace, SFMono-Regular, Menlo, Consolas, monospace; font-size: .9em;
        background: #f3f5f7; padding: .1em .3em; border-radius: 3px; }
