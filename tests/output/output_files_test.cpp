@@ -70,6 +70,9 @@ TEST(CheckOutputFile, TextTablesEndWithANewlineAndHaveTheirSize) {
   EXPECT_NE(check_output_file(put(dir + "/c.csv", "x,y\n1,2\n"), "c.csv", 9), "");  // short
   EXPECT_EQ(check_output_file(put(dir + "/d.svg", "<svg>\n</svg>\n"), "d.svg"), "");
   EXPECT_NE(check_output_file(put(dir + "/e.svg", "<svg>\n<g>"), "e.svg"), "");
+  EXPECT_EQ(check_output_file(put(dir + "/f.html", "<!DOCTYPE html>\n<html>\n</html>\n"), "f.html"), "");
+  EXPECT_EQ(check_output_file(put(dir + "/g.html", "<!DOCTYPE html>\n<html>\n<p>"), "g.html"),
+            "no </html> at the end (truncated HTML)");
 }
 
 // A format the check does not know is refused, not published unverified.
@@ -160,6 +163,7 @@ TEST(PublishVerified, ATruncatedImageIsRemovedNotRenamed) {
 TEST(StaleTemporaries, OnlyOurWritersNamesAreMatched) {
   EXPECT_TRUE(is_rackopt_temporary("summary.json.tmp.12345"));
   EXPECT_TRUE(is_rackopt_temporary("stiffness.png.tmp"));
+  EXPECT_TRUE(is_rackopt_temporary("pareto.svg.tmp"));
   EXPECT_TRUE(is_rackopt_temporary(".evaluations.csv.tmpA1b2C3"));
   EXPECT_FALSE(is_rackopt_temporary("summary.json"));
   EXPECT_FALSE(is_rackopt_temporary("notes.tmp.txt"));

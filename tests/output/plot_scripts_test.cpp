@@ -5,12 +5,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "rackopt/output/file_check.hpp"
 #include "rackopt/output/plot.hpp"
 #include "rackopt/output/stiffness_report.hpp"
 #include "rackopt/output/wear_report.hpp"
+#include "support/file_text.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace rackopt {
 namespace {
@@ -62,6 +68,33 @@ TEST(PlotScripts, StiffnessPlotReadsEachSlotsOwnColumns) {
                                  std::to_string(column(slot + "_load_share")) + " : 1/0) with lines title 'pair slot " +
                                  std::to_string(q) + "'";
     EXPECT_NE(gp.find(expected), std::string::npos) << expected << "\n" << gp;
+  }
+}
+
+// One script, two images: the PNG by default, the same plot as SVG when
+// gnuplot runs with rackopt_svg defined (what report.html inlines).
+TEST(PlotScripts, OneScriptDrawsThePngAndTheSameSvg) {
+  const std::string terminal = gnuplot_terminal("tiny.png.tmp", 400, 300, 13);
+  EXPECT_NE(terminal.find("set terminal pngcairo size 400,300 noenhanced font ',13'"), std::string::npos) << terminal;
+  EXPECT_NE(terminal.find("set output 'tiny.png.tmp'"), std::string::npos);
+  EXPECT_NE(terminal.find("set terminal svg size 400,300 standalone"), std::string::npos);
+  EXPECT_NE(terminal.find("set output 'tiny.svg.tmp'"), std::string::npos);
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
+  const std::string dir = test_support::scratch_dir("png_and_svg");
+  std::ofstream(dir + "/tiny.gp") << terminal << "plot x title 'x'\n";
+  std::vector<std::string> warnings;
+  const std::string png = render_plot(dir, "tiny.gp", "tiny.png", warnings);
+  const std::string svg = render_plot_svg(dir, "tiny.gp", "tiny.svg", warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(png, dir + "/tiny.png");
+  EXPECT_EQ(svg, dir + "/tiny.svg");
+  EXPECT_EQ(check_output_file(png, "tiny.png"), "");
+  EXPECT_EQ(check_output_file(svg, "tiny.svg"), "");
+  const std::string text = test_support::read_text(svg);
+  EXPECT_NE(text.find("viewBox=\"0 0 400 300\""), std::string::npos);
+  EXPECT_EQ(text.find("<script"), std::string::npos);  // standalone: no mousing code
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
   }
 }
 

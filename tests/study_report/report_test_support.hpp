@@ -140,6 +140,29 @@ DesignResult design(const StudySpec& spec, double module, double span, const std
   return d;
 }
 
+// A front of `points` designs from (20 mm, 3 m) to (32 mm, 1.2 m), point
+// `chosen` chosen, over 200 evaluations.
+StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t chosen) {
+  StudyResult r;
+  r.status = study::StudyStatus::kOk;
+  for (std::size_t k = 0; k < points; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(points - 1);
+    r.front.push_back(design(spec, 0.02 + 0.012 * t, 3.0 - 1.8 * t, "eps " + std::to_string(k)));
+  }
+  r.chosen = chosen;
+  r.evaluations = 200;
+  r.seconds = 1.0;
+  r.best_history = std::vector<double>(200, 0.3);
+  return r;
+}
+
+// How often `what` occurs in `text` (not overlapping).
+std::size_t occurrences_of(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
 // Every link target of report.md, relative to its folder.
 std::vector<std::string> markdown_links(const std::string& md) {
   // (no std::regex: GCC 12 warns inside it under the sanitizer build)

@@ -20,13 +20,16 @@ TEST(StudySummaryText, NamesTheStatusAndTheBestDesign) {
   r.evaluations = 40;
   StudyReport rep;
   rep.files.add("report_md", "out/synthetic/report.md");
+  rep.files.add("report_html", "out/synthetic/report.html");
   const std::string text = study_summary_text(spec, r, rep, "out/synthetic");
   EXPECT_EQ(text.rfind("study synthetic (optimize): converged\n  " + status_message(spec, r) + "\n", 0), 0u)
       << text;
   EXPECT_NE(text.find("  best design (start 0):\n"), std::string::npos) << text;
   EXPECT_NE(text.find("    pinion.module = 25 mm\n"), std::string::npos) << text;
   EXPECT_NE(text.find("    min_stiffness: 2.5 MN/m\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("  wrote out/synthetic/ (out/synthetic/report.md)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  wrote out/synthetic/ (out/synthetic/report.md, out/synthetic/report.html)\n"),
+            std::string::npos)
+      << text;
   EXPECT_EQ(text.find("continue with"), std::string::npos) << text;
   EXPECT_EQ(text.find("NO FEASIBLE DESIGN"), std::string::npos) << text;
 }

@@ -132,20 +132,6 @@ TEST(StudyReport, OptimizeSummaryHoldsTheBestDesignCountsAndTimings) {
   EXPECT_EQ(j["description"], spec.description);
 }
 
-StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t chosen) {
-  StudyResult r;
-  r.status = study::StudyStatus::kOk;
-  for (std::size_t k = 0; k < points; ++k) {
-    const double t = static_cast<double>(k) / static_cast<double>(points - 1);
-    r.front.push_back(design(spec, 0.02 + 0.012 * t, 3.0 - 1.8 * t, "eps " + std::to_string(k)));
-  }
-  r.chosen = chosen;
-  r.evaluations = 200;
-  r.seconds = 1.0;
-  r.best_history = std::vector<double>(200, 0.3);
-  return r;
-}
-
 TEST(StudyReport, ParetoFrontHasEveryPointAndExactlyOneChosen) {
   StudySpec spec = base_spec(StudyKind::kPareto);
   spec.objectives.push_back(objective("supports_per_metre"));
@@ -212,7 +198,9 @@ TEST(StudyReport, FrontPlotFindsTheObjectivesInTheRecordsCsv) {
   }
   r.evaluations_csv_path = dir + "/evaluations.csv";
   write_study_report(spec, r, dir);
-  EXPECT_NE(read_text(dir + "/pareto.gp").find("title 'every evaluation'"), std::string::npos);
+  const std::string gp = read_text(dir + "/pareto.gp");
+  EXPECT_NE(gp.find("keyentry with points pt 7 ps 1 lc rgb '#c8c8c8' title 'every evaluation'"), std::string::npos);
+  EXPECT_NE(gp.find("'evaluations.csv' skip 1 using"), std::string::npos);
 }
 
 TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
@@ -223,7 +211,12 @@ TEST(StudyReport, ThreeObjectiveFrontIsPlottedAsThreeProjections) {
   const std::string dir = scratch_path("pareto3");
   const StudyReport rep = write_study_report(spec, r, dir);
   const std::string gp = read_text(dir + "/pareto.gp");
-  EXPECT_NE(gp.find("multiplot layout 1,3"), std::string::npos);
+  EXPECT_NE(gp.find("# 3 projections: 1 row of 3\n"), std::string::npos);
+  // One legend for the three panels, below them.
+  EXPECT_EQ(occurrences_of(gp, "'front.csv' skip 1 using"), 3u);
+  EXPECT_EQ(occurrences_of(gp, "title 'Pareto front'"), 1u);
+  EXPECT_EQ(occurrences_of(gp, "title 'chosen design'"), 1u);
+  EXPECT_EQ(occurrences_of(gp, "title 'every evaluation'"), 0u);  // no evaluations.csv here
   const auto j = nlohmann::json::parse(rep.summary_json);
   EXPECT_EQ(j["front"][0]["objectives"][2]["sense"], "maximize");
   if (gnuplot_available()) {
@@ -279,7 +272,10 @@ TEST(StudyReport, FourObjectiveFrontIsPlottedAsSixProjections) {
   const StudyResult r = pareto_result(spec, 9, 0);
   const std::string dir = scratch_path("pareto4");
   write_study_report(spec, r, dir);
-  EXPECT_NE(read_text(dir + "/pareto.gp").find("multiplot layout 2,3"), std::string::npos);
+  const std::string gp = read_text(dir + "/pareto.gp");
+  EXPECT_NE(gp.find("# 6 projections: 2 rows of 3\n"), std::string::npos);
+  EXPECT_EQ(occurrences_of(gp, "'front.csv' skip 1 using"), 6u);
+  EXPECT_EQ(occurrences_of(gp, "title 'Pareto front'"), 1u);
 }
 
 TEST(StudyReport, SweepTableHasOneRowPerPointAndFeasibilityFlags) {

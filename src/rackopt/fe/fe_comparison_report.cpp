@@ -217,8 +217,7 @@ std::string fe_comparison_gnuplot(const FeComparison& c, const std::string& titl
   o << "EOD\n$fe << EOD\n";
   for (const ComparedPosition& r : c.rows) o << fmt("%.9g", r.travel) << " " << fmt("%.9g", r.k_fe) << "\n";
   o << "EOD\n";
-  o << "set terminal pngcairo size 1200,700 noenhanced font ',11'\n";
-  o << "set output '" << png_name << "'\n";
+  o << gnuplot_terminal(png_name, 1200, 700);
   o << "set title "
     << gnuplot_quote(title + ": mesh stiffness, analytic (" +
                      (c.fe.rack_on_supports ? "rack on its supports" : "rigid rack body") + ") vs FE, level " +

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "rackopt/output/plot.hpp"
+
 namespace rackopt::fe {
 namespace {
 
@@ -46,8 +48,7 @@ std::map<std::pair<int, int>, int> edges_of(const Mesh2D& mesh) {
 ShapeWindow grown(const ShapeWindow& w, double margin) { return {w.x0 - margin, w.x1 + margin, w.y0 - margin, w.y1 + margin}; }
 
 void axes(std::ostringstream& o, const ShapeWindow& w, const std::string& title, const std::string& png_name) {
-  o << "set terminal pngcairo size 1200,1000 noenhanced font ',11'\n";
-  o << "set output " << quoted(png_name) << "\n";
+  o << gnuplot_terminal(png_name, 1200, 1000);
   o << "set title " << quoted(title) << "\n";
   o << "set size ratio -1\nset clip two\nset clip one\nunset key\n";
   o << "set xlabel 'x along the rack [mm]'\nset ylabel 'y [mm] (rack datum at 0)'\n";

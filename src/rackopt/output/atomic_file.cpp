@@ -61,8 +61,8 @@ bool is_rackopt_temporary(const std::string& name) {
     for (std::size_t i = at + 5; i < name.size(); ++i) digits = digits && std::isdigit(static_cast<unsigned char>(name[i]));
     if (digits) return true;
   }
-  // "<name>.png.tmp"
-  if (name.size() > 8 && ends_with(name, ".png.tmp")) return true;
+  // "<name>.png.tmp", "<name>.svg.tmp"
+  if (name.size() > 8 && (ends_with(name, ".png.tmp") || ends_with(name, ".svg.tmp"))) return true;
   // ".<name>.tmpXXXXXX"
   if (name.size() > 11 && name[0] == '.' && name.compare(name.size() - 10, 4, ".tmp") == 0) {
     bool alnum = true;

@@ -24,7 +24,7 @@ std::string publish_verified(const std::string& tmp, const std::string& path);
 
 // True for the names of temporary files rackopt's writers create in an
 // output folder: ".<name>.tmp" + 6 characters (write_file_atomically),
-// "<name>.png.tmp" (plots: the gnuplot scripts write there) and
+// "<name>.png.tmp" and "<name>.svg.tmp" (plots: the gnuplot scripts write there) and
 // "<name>.tmp.<digits>" (the pid-suffixed names that folders written by
 // earlier rackopt builds may hold).
 bool is_rackopt_temporary(const std::string& file_name);

@@ -105,6 +105,11 @@ std::string check_output_file(const std::string& path, const std::string& format
   } else if (ext == ".svg") {
     const long long n = std::min<long long>(size, 64);
     if (read_range(in, size - n, n).find("</svg>") == std::string::npos) return "no </svg> at the end (truncated SVG)";
+  } else if (ext == ".html") {
+    const long long n = std::min<long long>(size, 64);
+    if (read_range(in, size - n, n).find("</html>") == std::string::npos) {
+      return "no </html> at the end (truncated HTML)";
+    }
   } else if (ext == ".json") {
     std::ostringstream all;
     all << in.rdbuf();

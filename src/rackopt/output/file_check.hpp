@@ -12,7 +12,7 @@ namespace rackopt {
 //  * every file: exists, size > 0 and, when expected_size >= 0, exactly that size;
 //  * .png: the 8-byte PNG signature at the start and an IEND chunk (with its
 //    CRC) as the last 12 bytes;
-//  * .svg: "</svg>" in the last bytes;
+//  * .svg: "</svg>" in the last bytes; .html: "</html>" in the last bytes;
 //  * .json: one complete JSON value (balanced objects/arrays/strings, nothing
 //    but white space after it);
 //  * .csv, .md, .gp: ends with a newline;

@@ -52,11 +52,15 @@ double plot_time_limit_seconds() {
   return 60.0;
 }
 
-std::string render_plot(const std::string& dir_name, const std::string& script, const std::string& png,
-                        std::vector<std::string>& warnings) {
+namespace {
+
+// render_plot and render_plot_svg: gnuplot on `script` with `arguments`
+// before it, `image` published from `image`.tmp (the name the script writes).
+std::string render(const std::string& dir_name, const std::string& script, const std::string& image,
+                   const std::vector<std::string>& arguments, std::vector<std::string>& warnings) {
   const fs::path dir(dir_name.empty() ? std::string(".") : dir_name);
-  const std::string png_path = (dir / png).string();
-  const std::string tmp_path = png_path + ".tmp";
+  const std::string image_path = (dir / image).string();
+  const std::string tmp_path = image_path + ".tmp";
   const char* env = std::getenv("RACKOPT_GNUPLOT");
   const std::string program = env != nullptr && *env != '\0' ? env : "gnuplot";
   const std::string exe = find_program(program);
@@ -65,7 +69,7 @@ std::string render_plot(const std::string& dir_name, const std::string& script, 
     return "";
   }
   if (stop_requested()) {
-    warnings.push_back("plot " + png_path + " not drawn: stopped by " + stop_reason());
+    warnings.push_back("plot " + image_path + " not drawn: stopped by " + stop_reason());
     return "";
   }
   std::error_code ec;
@@ -75,7 +79,8 @@ std::string render_plot(const std::string& dir_name, const std::string& script, 
 
   ChildCommand command;
   command.program = exe;
-  command.arguments = {script};
+  command.arguments = arguments;
+  command.arguments.push_back(script);
   command.working_dir = dir.string();
   command.stderr_file = log;
   command.time_limit_seconds = plot_time_limit_seconds();
@@ -83,7 +88,7 @@ std::string render_plot(const std::string& dir_name, const std::string& script, 
   std::string failure;
   switch (outcome.kind) {
     case ChildOutcome::Kind::not_started:
-      warnings.push_back("plot " + png_path + " not drawn: " + outcome.message);
+      warnings.push_back("plot " + image_path + " not drawn: " + outcome.message);
       return "";
     case ChildOutcome::Kind::stopped:
       failure = "stopped by " + outcome.message;
@@ -100,17 +105,47 @@ std::string render_plot(const std::string& dir_name, const std::string& script, 
     failure = "gnuplot failed on " + script + ": see " + (dir / log).string();
   }
   if (failure.empty()) {
-    const std::string why = publish_verified(tmp_path, png_path);
+    const std::string why = publish_verified(tmp_path, image_path);
     if (!why.empty()) failure = "the image gnuplot wrote is not valid (" + why + ")";
   }
   if (!failure.empty()) {
     fs::remove(tmp_path, ec);
     if (fs::exists(dir / log, ec) && fs::file_size(dir / log, ec) == 0) fs::remove(dir / log, ec);  // nothing to see
-    warnings.push_back("plot " + png_path + " not drawn: " + failure);
+    warnings.push_back("plot " + image_path + " not drawn: " + failure);
     return "";
   }
   fs::remove(dir / log, ec);
-  return png_path;
+  return image_path;
+}
+
+}  // namespace
+
+std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
+                        std::vector<std::string>& warnings) {
+  return render(dir, script, png, {}, warnings);
+}
+
+std::string render_plot_svg(const std::string& dir, const std::string& script, const std::string& svg,
+                            std::vector<std::string>& warnings) {
+  return render(dir, script, svg, {"-e", "rackopt_svg=1"}, warnings);
+}
+
+std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size) {
+  const std::string suffix = ".png.tmp";
+  const bool png_name = png_tmp.size() > suffix.size() &&
+                        png_tmp.compare(png_tmp.size() - suffix.size(), suffix.size(), suffix) == 0;
+  const std::string stem = png_name ? png_tmp.substr(0, png_tmp.size() - suffix.size()) : png_tmp;
+  const std::string size = std::to_string(width) + "," + std::to_string(height);
+  const std::string font = std::to_string(font_size);
+  // noenhanced: labels are metric keys with underscores, not subscripts.
+  return "if (exists('rackopt_svg')) {\n"
+         "  set terminal svg size " + size + " standalone noenhanced font 'sans-serif," + font +
+         "' background rgb 'white'\n"
+         "  set output " + gnuplot_quote(stem + ".svg.tmp") + "\n"
+         "} else {\n"
+         "  set terminal pngcairo size " + size + " noenhanced font '," + font + "'\n"
+         "  set output " + gnuplot_quote(png_tmp) + "\n"
+         "}\n";
 }
 
 }  // namespace rackopt

@@ -4,7 +4,8 @@
 // only when gnuplot succeeded and the file passes check_output_file (PNG
 // signature, IEND chunk at the end). Plots are a convenience: a missing,
 // failing, hung or interrupted gnuplot is a warning naming the file for the
-// caller to show, never an error of the run.
+// caller to show, never an error of the run. Every script can also draw
+// its plot as SVG (gnuplot_terminal): report.html inlines those.
 #pragma once
 
 #include <string>
@@ -25,6 +26,21 @@ namespace rackopt {
 // wrapper). The time limit is plot_time_limit_seconds().
 std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
                         std::vector<std::string>& warnings);
+
+// The same plot as SVG: runs gnuplot on `dir`/`script` with
+// `-e "rackopt_svg=1"` (gnuplot_terminal then writes `svg`.tmp), and
+// publishes it as `dir`/`svg` like render_plot (the SVG check: "</svg>" at
+// the end). Returns the SVG's path, or "" with one warning naming it.
+std::string render_plot_svg(const std::string& dir, const std::string& script, const std::string& svg,
+                            std::vector<std::string>& warnings);
+
+// The terminal and output lines every plot script starts with: a PNG of
+// `width` x `height` pixels, text `font_size` pixels high, into `png_tmp` (the name render_plot expects,
+// "<name>.png.tmp"); when gnuplot runs with rackopt_svg defined
+// (render_plot_svg), the same plot as a standalone SVG of the same size into
+// "<name>.svg.tmp". One script for both: the PNG and the SVG cannot drift
+// apart, and the script stays runnable by hand (`gnuplot x.gp`).
+std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size = 11);
 
 // Seconds one gnuplot run may take: RACKOPT_PLOT_TIMEOUT (a positive number)
 // when set, else 60.

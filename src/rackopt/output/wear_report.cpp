@@ -134,8 +134,8 @@ std::string life_histogram_csv(const WearReliabilityResult& r, int bins) {
 }
 
 static std::string gp_header(const std::string& title, const std::string& png) {
-  return "set datafile separator ','\nset terminal pngcairo size 1200,750 noenhanced font ',11'\n"
-         "set output '" + png + ".tmp'\nset title " + gnuplot_quote(title) + "\nset grid\nset key outside right\n";
+  return "set datafile separator ','\n" + gnuplot_terminal(png + ".tmp", 1200, 750) + "set title " +
+         gnuplot_quote(title) + "\nset grid\nset key outside right\n";
 }
 
 std::string wear_profile_gnuplot(const std::string& title) {

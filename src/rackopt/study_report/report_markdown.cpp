@@ -38,14 +38,6 @@ std::string md_cell(const std::string& s) {
   return out;
 }
 
-// Files inside the output folder are linked relatively, so report.md still
-// works when the folder is moved or copied.
-std::string link_target(const fs::path& out_dir, const std::string& path) {
-  const fs::path rel = fs::path(path).lexically_normal().lexically_relative(out_dir.lexically_normal());
-  if (!rel.empty() && rel.native().rfind("..", 0) != 0) return rel.generic_string();
-  return fs::absolute(path).generic_string();
-}
-
 void md_design(std::ostringstream& o, const StudySpec& spec, const DesignResult& d) {
   o << "| | |\n|---|---|\n";
   for (std::size_t i = 0; i < spec.variables.size() && i < d.x.size(); ++i) {
@@ -64,6 +56,12 @@ void md_design(std::ostringstream& o, const StudySpec& spec, const DesignResult&
 }
 
 }  // namespace
+
+std::string link_target(const fs::path& out_dir, const std::string& path) {
+  const fs::path rel = fs::path(path).lexically_normal().lexically_relative(out_dir.lexically_normal());
+  if (!rel.empty() && rel.native().rfind("..", 0) != 0) return rel.generic_string();
+  return fs::absolute(path).generic_string();
+}
 
 std::string report_markdown(const StudySpec& spec, const StudyResult& result, const ReportFiles& files,
                             const std::vector<std::string>& warnings, const fs::path& out_dir) {

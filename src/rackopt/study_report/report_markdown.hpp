@@ -20,4 +20,8 @@ namespace rackopt::study_report {
 std::string report_markdown(const StudySpec& spec, const StudyResult& result, const ReportFiles& files,
                             const std::vector<std::string>& warnings, const std::filesystem::path& out_dir);
 
+// How report.md links the file `path`: relative to `out_dir` when inside it,
+// so the report still works when the folder is moved or copied; else absolute.
+std::string link_target(const std::filesystem::path& out_dir, const std::string& path);
+
 }  // namespace rackopt::study_report

@@ -98,7 +98,9 @@ std::string study_summary_text(const StudySpec& spec, const StudyResult& r, cons
     o << "  ... and " << rep.warnings.size() - shown << " more warnings (summary.json, report.md)\n";
   }
   const std::string md = rep.files.get("report_md");
-  o << "  wrote " << out_dir << "/ (" << (md.empty() ? std::string("summary.json") : md) << ")\n";
+  const std::string html = rep.files.get("report_html");
+  o << "  wrote " << out_dir << "/ (" << (md.empty() ? std::string("summary.json") : md)
+    << (html.empty() ? std::string() : ", " + html) << ")\n";
   if (r.status == StudyStatus::kStopped) o << "  continue with: rackopt run " << spec.file << " --out " << out_dir << " --resume\n";
   return o.str();
 }

@@ -12,9 +12,9 @@
 namespace rackopt::study_report {
 
 // The text, several lines each ending in "\n". `report` is what
-// write_study_report returned for `result` (its warnings and report.md path
-// are shown), `out_dir` the output folder as the user named it (the resume
-// hint of a stopped run repeats it).
+// write_study_report returned for `result` (its warnings and the paths of
+// report.md and report.html are shown), `out_dir` the output folder as the
+// user named it (the resume hint of a stopped run repeats it).
 std::string study_summary_text(const StudySpec& spec, const StudyResult& result, const StudyReport& report,
                                const std::string& out_dir);
 

@@ -15,7 +15,8 @@
 namespace rackopt::study_report {
 
 // pareto.png from front.csv (`front`: its layout): one panel for two
-// objectives, the three pairwise projections for three. Every ok, non-probe
+// objectives, the three pairwise projections for three, the six in two rows
+// for four, with one legend below all panels. Every ok, non-probe
 // evaluation of `evaluations_csv` is drawn grey behind the front when that
 // file has the needed columns; the chosen point is circled.
 std::string pareto_gnuplot(const StudySpec& spec, const DesignTable& front, const std::string& evaluations_csv);

@@ -3,7 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <optional>
+#include <sstream>
 
 #include "rackopt/output/atomic_file.hpp"
 #include "rackopt/output/plot.hpp"
@@ -12,6 +15,7 @@
 #include "rackopt/study_report/design_tables.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
 #include "rackopt/study_report/front_quality_report.hpp"
+#include "rackopt/study_report/report_html.hpp"
 #include "rackopt/study_report/report_markdown.hpp"
 #include "rackopt/study_report/study_plots.hpp"
 
@@ -111,6 +115,26 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   if (!result.database_path.empty() && fs::exists(result.database_path)) {
     rep.files.add("database", result.database_path);
   }
+  // report.html shows each plot as SVG, drawn by the PNG's own script; the
+  // SVG stays next to the PNG for documents that want vector figures.
+  std::map<std::string, std::string> svg_by_target;
+  if (spec.output.report) {
+    std::size_t plots = 0;
+    for (const auto& entry : rep.files.entries) {
+      const fs::path png(entry.second);
+      const fs::path script = fs::path(png).replace_extension(".gp");
+      if (png.extension() != ".png" || !fs::exists(script)) continue;
+      const std::string svg = render_plot_svg(png.parent_path().string(), script.filename().string(),
+                                              fs::path(png.filename()).replace_extension(".svg").string(),
+                                              plot_warnings);
+      if (svg.empty()) continue;
+      rep.written.push_back(svg);
+      std::ifstream in(svg, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      svg_by_target[link_target(dir, entry.second)] = inline_svg(text.str(), "plot" + std::to_string(++plots) + "-");
+    }
+  }
   for (const auto& w : plot_warnings) rep.warnings.push_back(w);
 
   const std::string summary_path = (dir / "summary.json").string();
@@ -119,6 +143,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
     // summary.json does not exist yet: link it by hand (it will, below).
     md += "Summary for programs: [summary.json](summary.json)\n";
     rep.files.add("report_md", write("report.md", md));
+    rep.files.add("report_html", write("report.html", report_html(md, "Study: " + spec.name, svg_by_target)));
   }
   rep.files.add("summary_json", summary_path);
   ReportTimings timings;

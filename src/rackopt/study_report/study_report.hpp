@@ -1,6 +1,7 @@
 // What a finished (or stopped) study leaves in its output folder besides the
-// evaluation store: summary.json, CSV tables, gnuplot scripts and PNGs, and
-// report.md linking them. docs/output.md ("Study results") lists every file
+// evaluation store: summary.json, CSV tables, gnuplot scripts, PNGs and
+// SVGs, report.md linking them, and report.html (the same report with the
+// plots inside, report_html.hpp). docs/output.md ("Study results") lists every file
 // and column. The run itself is study/study_runner.hpp; this module only
 // presents a StudyResult.
 //
@@ -22,14 +23,15 @@
 namespace rackopt::study_report {
 
 // Files of a report by role, in the order written. Roles: "summary_json",
-// "report_md", "best_csv", "front_csv", "sweep_csv", "history_csv",
+// "report_md", "report_html", "best_csv", "front_csv", "sweep_csv", "history_csv",
 // "stiffness_csv", "pareto_png", "history_png", "stiffness_png",
 // "sweep_png", the wear roles of `rackopt wear` ("wear_profile_csv",
 // "life_samples_csv", "reliability_csv", "life_histogram_csv",
 // "wear_profile_png", "life_histogram_png", "reliability_png"), `verify: fe`'s
 // "fe_csv" and "fe_png" (study_report/fe_verification_report.hpp), and the
-// runner's "evaluations_csv" and "database". gnuplot scripts (*.gp) are
-// written next to each plot but not listed here.
+// runner's "evaluations_csv" and "database". gnuplot scripts (*.gp) and the
+// SVGs that report.html inlines are written next to each plot but not
+// listed here.
 struct ReportFiles {
   std::vector<std::pair<std::string, std::string>> entries;  // role, path
 
@@ -51,9 +53,10 @@ struct StudyReport {
 };
 
 // Writes the report of `result` into `out_dir` (created if missing); every
-// file atomically (write_file_atomic; PNGs through render_plot). Which files
-// depends on the kind (docs/output.md); plots only when spec.output.plots,
-// report.md only when spec.output.report, the stiffness curve only when
+// file atomically (write_file_atomic; PNGs and SVGs through render_plot and
+// render_plot_svg). Which files depends on the kind (docs/output.md); plots
+// only when spec.output.plots, report.md, report.html and the SVGs only when
+// spec.output.report, the stiffness curve only when
 // spec.output.stiffness_curve and the runner computed result.best_curve
 // (study/best_design_curve.hpp): the report runs no model. A plot gnuplot
 // cannot draw, or a stiffness curve the model refused
