@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <span>
 #include <chrono>
 #include <cmath>
@@ -845,8 +846,7 @@ struct WearModel::Impl {
         const auto hi = std::partition_point(lo, iv.end(), [&](int n) { return p.node_c[n] < c + L; });
         const int a = std::max(static_cast<int>(lo - iv.begin()) - 2, 0);
         const int z = std::min(static_cast<int>(hi - iv.begin()) + 1, M - 1);
-        int l = 0;
-        while ((2 << l) <= z - a + 1) ++l;
+        const int l = std::bit_width(static_cast<unsigned>(z - a + 1)) - 1;
         const std::vector<double>& t = range_max[v];
         mx = std::max({mx, t[l * M + a], t[l * M + z - (1 << l) + 1]});
       }
@@ -879,10 +879,22 @@ struct WearModel::Impl {
         order.emplace_back(G[mb].total() / (Kk * upper * rho[mb] / sig), mb * N + i);
       }
     }
-    std::sort(order.begin(), order.end());
-    for (const auto& [fewest_possible, k] : order) {
-      if (fewest_possible > fewest) break;
-      const int mb = k / N, i = k % N;
+    if (order.empty()) return true;
+    // The most promising point first; then only the points whose bound
+    // reaches its passes need sorting (a few tens of the 2N).
+    const auto first = std::min_element(order.begin(), order.end());
+    std::swap(*first, order.front());
+    {
+      const int mb = order.front().second / N, i = order.front().second % N;
+      q[mb][i] = exact_pass_load(p, bs, mb, i);
+      passes(mb, q[mb][i]);
+    }
+    const auto rest = std::partition(order.begin() + 1, order.end(),
+                                     [&](const std::pair<double, int>& o) { return !(o.first > fewest); });
+    std::sort(order.begin() + 1, rest);
+    for (auto it = order.begin() + 1; it != rest; ++it) {
+      if (it->first > fewest) break;
+      const int mb = it->second / N, i = it->second % N;
       q[mb][i] = exact_pass_load(p, bs, mb, i);
       passes(mb, q[mb][i]);
     }
