@@ -80,6 +80,7 @@ void expect_same_life_alone(const WearLifeResult& full, const WearLifeResult& le
   EXPECT_EQ(full.criterion, lean.criterion) << what;
   EXPECT_EQ(full.reason, lean.reason) << what;
   EXPECT_EQ(full.limiting_member, lean.limiting_member) << what;
+  EXPECT_EQ(full.warnings, lean.warnings) << what;
   EXPECT_EQ(full.blocks, lean.blocks) << what;
   EXPECT_EQ(full.load_solves, lean.load_solves) << what;
 }
@@ -108,6 +109,10 @@ TEST(WearLifeDetail, LifeOnlyBoundedSearchEqualsEveryPointsWeightsBitForBit) {
     rack.case_depth = case_depth;
     cases.back().drive.wear.stop_at_case_depth = true;
   }
+  // Measured hardness data that ends above the wear limit: the depths are
+  // needed for the warning, so the life takes the full path.
+  cases.push_back({"hardness data to 1 mm", test::ship_lift(), {}});
+  cases.back().drive.wear.pinion_hardness.valid_depth = 1e-3;
   cases.push_back({"no Hertz band", test::ship_lift(), {}});
   cases.back().options.hertz_band = false;
   cases.push_back({"update on, 60 points", test::ship_lift(), {}});
@@ -129,6 +134,7 @@ TEST(WearLifeDetail, LifeOnlyBoundedSearchEqualsEveryPointsWeightsBitForBit) {
                                    .force_scale = scale(rng),
                                    .surface_hardness_scale = scale(rng),
                                    .contact_ratio = eps(rng)});
+    bool warned = false;
     for (const WearSample& smp : samples) {
       const std::string what = c.name + ", contact ratio " +
                                (smp.contact_ratio ? std::to_string(*smp.contact_ratio) : std::string("nominal")) +
@@ -137,6 +143,10 @@ TEST(WearLifeDetail, LifeOnlyBoundedSearchEqualsEveryPointsWeightsBitForBit) {
       expect_same_life_alone(full, bounded.life(smp, WearModel::Detail::kLifeOnly), what);
       expect_same_life_alone(full, reference.life(smp, WearModel::Detail::kLifeOnly), what + " (every point's weights)");
       expect_same_life_alone(full, bounded.life(smp), what + " (full detail, bounded model)");
+      warned = warned || !full.warnings.empty();
+    }
+    if (c.name == "hardness data to 1 mm") {
+      EXPECT_TRUE(warned) << "the case must exercise the hardness warning";
     }
   }
 }

@@ -197,24 +197,40 @@ struct WearModel::Impl {
   // one that scales the force reuses the path and redoes the rest. Built by
   // the same code as a sample's own start, so the lives are bit-identical
   // (WearOptions::reuse_nominal_start off rebuilds them per life, for tests).
+  // The band weights are built on first use of their own: a life read for
+  // its life alone may not need them (bounded_pass_loads).
   struct NominalStart {
     Path path;        // before the load sharing (make_path)
-    Path weighted;    // the same with the band weights at the drive's force
     std::vector<double> margin;  // unworn signed pair margins at that force (solve)
   };
-  mutable std::once_flag nominal_once;
+  mutable std::once_flag nominal_once, weighted_once;
   mutable std::optional<NominalStart> nominal_start_;
+  mutable std::optional<Path> nominal_weighted_;  // the path with the band weights at the drive's force
   const NominalStart& nominal_start() const {
     std::call_once(nominal_once, [this] {
       NominalStart ns;
       ns.path = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
-      ns.weighted = ns.path;
       const std::vector<double> zero(ns.path.N, 0.0);
-      solve(ns.weighted, zero, zero, force, ns.margin);
-      build_weights(ns.weighted, ns.margin);
+      solve(ns.path, zero, zero, force, ns.margin);
       nominal_start_.emplace(std::move(ns));
     });
     return *nominal_start_;
+  }
+  const Path& nominal_weighted() const {
+    std::call_once(weighted_once, [this] {
+      const NominalStart& ns = nominal_start();
+      Path weighted = ns.path;
+      build_weights(weighted, ns.margin);
+      nominal_weighted_.emplace(std::move(weighted));
+    });
+    return *nominal_weighted_;
+  }
+
+  // No depth can pass the end of a member's measured hardness data before
+  // its limit (a depth never passes the limit): then no life warns of it.
+  bool hardness_warnings_impossible() const {
+    return hardness[kPinion].first_clamped_depth() >= limit[kPinion] &&
+           hardness[kRack].first_clamped_depth() >= limit[kRack];
   }
 
   Impl(const Drive& d, WearOptions o)
@@ -947,17 +963,26 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
   std::array<std::vector<double>, 2> q, rate, g_prev;
   BoundedSearch bs;
   bool bounded = false;
+  // Without the depths the hardness warnings are unknown: bounded only
+  // where there can be none.
+  const bool may_bound =
+      detail == Detail::kLifeOnly && !update && opt.bounded_life_search && hardness_warnings_impossible();
+  bool weighted_nominal = false;
   if (nominal_path && nominal_force) {
     margin = nominal_start().margin;
+    if (may_bound) {
+      local = nominal_start().path;  // a copy: the search sets the pinion's band sliding
+      bounded = bounded_pass_loads(local, margin, Kk, rho, sig, bs, q);
+    }
+    weighted_nominal = !bounded;
   } else {
     local = nominal_path ? nominal_start().path : make_path(s_start, eps0, clearance);
     const std::vector<double> zero(local.N, 0.0);
     solve(local, zero, zero, F, margin);
-    bounded = detail == Detail::kLifeOnly && !update && opt.bounded_life_search &&
-              bounded_pass_loads(local, margin, Kk, rho, sig, bs, q);
+    bounded = may_bound && bounded_pass_loads(local, margin, Kk, rho, sig, bs, q);
     if (!bounded) build_weights(local, margin);
   }
-  const Path& p = nominal_path && nominal_force ? nominal_start().weighted : local;
+  const Path& p = weighted_nominal ? nominal_weighted() : local;
   const int N = p.N;
   std::array<std::vector<double>, 2> h{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
   std::array<std::vector<double>, 2> g = h;  // G(h) per point (model hardness units)

@@ -127,8 +127,9 @@ struct WearOptions {
   // error is about H'' dh^2 / (12 H), below 1e-9 for the shipped profiles.
   int hardness_cells = 2048;
   // A life read for its life only (Detail::kLifeOnly) without the profile
-  // update is decided by the first point to reach its limit and that
-  // point's neighbours. With this on, a point's band weights are built only
+  // update, where no depth can pass a member's measured hardness data before
+  // its limit (so no warning needs the depths), is decided by the first
+  // point to reach its limit and that point's neighbours. With this on, a point's band weights are built only
   // when an upper bound of its wear rate (the largest pair load over its
   // band times its sliding) could make it that point; the life, criterion,
   // limiting member and reason are the same bits as with every point's
@@ -156,12 +157,13 @@ class WearModel {
   WearLifeResult life(const WearSample& sample = {}) const;
   // What a life fills in: everything; everything but the snapshots (empty;
   // the other fields are the same bits); or the life alone, for callers that
-  // read only the life and its criterion (the reliability's table, quantile
-  // and sample lives): life_cycles, life_pinion_cycles, life_years,
-  // criterion, reason, limiting_member, the contact ratios, blocks and
-  // load_solves are the same bits as the full result's, while the profiles,
-  // the deepest wear and the hardness-data warnings may be left empty (they
-  // are without the profile update: WearOptions::bounded_life_search).
+  // read only the life, its criterion and its warnings (the reliability's
+  // table, quantile and sample lives, the metrics' nominal life):
+  // life_cycles, life_pinion_cycles, life_years, criterion, reason,
+  // limiting_member, the contact ratios, warnings, blocks and load_solves are
+  // the same bits as the full result's, while the profiles and the deepest
+  // wear may be left empty (they are without the profile update when no
+  // depth can pass the measured hardness data: WearOptions::bounded_life_search).
   enum class Detail { kFull, kNoSnapshots, kLifeOnly };
   WearLifeResult life(const WearSample& sample, Detail detail) const;
 

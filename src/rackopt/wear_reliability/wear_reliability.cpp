@@ -146,7 +146,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   WearReliabilityResult out;
   const WearModel model(drive);
   auto t0 = std::chrono::steady_clock::now();
-  out.nominal = model.life();
+  out.nominal = model.life({}, opt.nominal_detail);
   out.nominal_ms = ms_since(t0);
 
   const ReliabilitySpec& spec = drive.reliability;
