@@ -803,8 +803,8 @@ struct WearModel::Impl {
   // weights built (the same calls and sums as build_weights and pass_loads)
   // until the bound exceeds the fewest passes found: every point that could
   // have as few then has its exact pass load, the others none (0, which the
-  // search skips). The bound carries a margin of 1e-6 over the rounding of
-  // the weights' sum (of order 1e-15).
+  // search skips). The bound carries a margin of 1e-6: the rounding of the
+  // weights and of their sum is many orders of magnitude smaller.
   struct BoundedSearch {
     std::array<std::vector<PointBand>, 2> band;
     std::array<std::vector<char>, 2> known;
@@ -835,13 +835,11 @@ struct WearModel::Impl {
     // Range maxima of the loads along each interval: level l holds the
     // maximum of 2^l consecutive nodes (a sparse table).
     std::vector<std::vector<double>> range_max(p.intervals.size());
-    std::vector<int> levels(p.intervals.size(), 0);
     for (std::size_t v = 0; v < p.intervals.size(); ++v) {
       const std::vector<int>& iv = p.intervals[v];
       const int M = static_cast<int>(iv.size());
       int L = 1;
       while ((2 << (L - 1)) <= M) ++L;
-      levels[v] = L;
       std::vector<double>& t = range_max[v];
       t.resize(static_cast<std::size_t>(L) * M);
       for (int j = 0; j < M; ++j) t[j] = bs.load[iv[j]];
