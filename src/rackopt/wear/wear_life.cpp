@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <span>
 #include <chrono>
 #include <cmath>
@@ -196,24 +197,40 @@ struct WearModel::Impl {
   // one that scales the force reuses the path and redoes the rest. Built by
   // the same code as a sample's own start, so the lives are bit-identical
   // (WearOptions::reuse_nominal_start off rebuilds them per life, for tests).
+  // The band weights are built on first use of their own: a life read for
+  // its life alone may not need them (bounded_pass_loads).
   struct NominalStart {
     Path path;        // before the load sharing (make_path)
-    Path weighted;    // the same with the band weights at the drive's force
     std::vector<double> margin;  // unworn signed pair margins at that force (solve)
   };
-  mutable std::once_flag nominal_once;
+  mutable std::once_flag nominal_once, weighted_once;
   mutable std::optional<NominalStart> nominal_start_;
+  mutable std::optional<Path> nominal_weighted_;  // the path with the band weights at the drive's force
   const NominalStart& nominal_start() const {
     std::call_once(nominal_once, [this] {
       NominalStart ns;
       ns.path = make_path(s_start_nom, eps_nom, drive.mounting.clearance);
-      ns.weighted = ns.path;
       const std::vector<double> zero(ns.path.N, 0.0);
-      solve(ns.weighted, zero, zero, force, ns.margin);
-      build_weights(ns.weighted, ns.margin);
+      solve(ns.path, zero, zero, force, ns.margin);
       nominal_start_.emplace(std::move(ns));
     });
     return *nominal_start_;
+  }
+  const Path& nominal_weighted() const {
+    std::call_once(weighted_once, [this] {
+      const NominalStart& ns = nominal_start();
+      Path weighted = ns.path;
+      build_weights(weighted, ns.margin);
+      nominal_weighted_.emplace(std::move(weighted));
+    });
+    return *nominal_weighted_;
+  }
+
+  // No depth can pass the end of a member's measured hardness data before
+  // its limit (a depth never passes the limit): then no life warns of it.
+  bool hardness_warnings_impossible() const {
+    return hardness[kPinion].first_clamped_depth() >= limit[kPinion] &&
+           hardness[kRack].first_clamped_depth() >= limit[kRack];
   }
 
   Impl(const Drive& d, WearOptions o)
@@ -554,24 +571,65 @@ struct WearModel::Impl {
     return p;
   }
 
-  // Band-averaging weights of both members from the unworn pair loads P0
-  // (signed margins, solve). The band's half-width at a point is that of the
-  // unworn contact there (frozen while it wears; a depends on sqrt(w) only).
-  void build_weights(Path& p, const std::vector<double>& P0) const {
+  // The Hertz band's half-width at each point from the unworn pair loads P0
+  // (signed margins, solve), frozen while it wears (a depends on sqrt(w)
+  // only); zeros without the band.
+  std::vector<double> half_widths(const Path& p, const std::vector<double>& P0) const {
     std::vector<double> half_width(p.N, 0.0);
+    if (!opt.hertz_band) return half_width;
+    std::vector<int> pi;
+    std::vector<double> pv;
+    for (int i = 0; i < p.N; ++i) {
+      const double c = p.s[i];
+      pi.clear();
+      pv.clear();
+      pointwise_weights(p.node_c, p.intervals, c, pi, pv);
+      double w0 = 0;
+      for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
+      half_width[i] = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
+    }
+    return half_width;
+  }
+
+  // Where point i of member mb sees the pair loads: the band [c - L, c + L]
+  // of LOA coordinates (band), or the pair at c alone (!band: no band, or
+  // one too thin). The pinion's band is the exact window on the involute,
+  // whose sliding replaces the point's thin-band sliding here.
+  struct PointBand {
+    bool band = false;
+    double c = 0, L = 0;
+  };
+  PointBand point_band(Path& p, int mb, int i, double a) const {
+    const double c = p.s[i];
     if (opt.hertz_band) {
-      std::vector<int> pi;
-      std::vector<double> pv;
-      for (int i = 0; i < p.N; ++i) {
-        const double c = p.s[i];
-        pi.clear();
-        pv.clear();
-        pointwise_weights(p.node_c, p.intervals, c, pi, pv);
-        double w0 = 0;
-        for (std::size_t k = 0; k < pi.size(); ++k) w0 += pv[k] * P0[pi[k]];
-        half_width[i] = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
+      // Surface distance per unit LOA: rack flank tan a0, pinion involute s/r_b.
+      if (mb == kRack) {
+        const double L = a / ta;
+        if (L > 1e-12 * pb) return {true, c, L};
+      } else if (a > 1e-12 * pb) {
+        const InvoluteWindow win = involute_band_window(c, a, rb, sP);
+        if (win.hi - win.lo > 2e-12 * pb) {
+          const double thin = p.slide[kPinion][i];
+          if (thin > 0) p.base_circle_window = std::min(p.base_circle_window, win.slide / thin);
+          p.slide[kPinion][i] = win.slide;
+          return {true, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo)};
+        }
       }
     }
+    return {false, c, 0.0};
+  }
+  static void point_weights(const Path& p, const PointBand& pb_, std::vector<int>& idx, std::vector<double>& val) {
+    if (pb_.band) {
+      band_weights(p.node_c, p.intervals, pb_.c, pb_.L, idx, val);
+    } else {
+      pointwise_weights(p.node_c, p.intervals, pb_.c, idx, val);
+    }
+  }
+
+  // Band-averaging weights of both members from the unworn pair loads P0
+  // (signed margins, solve).
+  void build_weights(Path& p, const std::vector<double>& P0) const {
+    const std::vector<double> half_width = half_widths(p, P0);
     for (int mb = 0; mb < 2; ++mb) {
       auto& beg = p.w_begin[mb];
       auto& idx = p.w_idx[mb];
@@ -586,29 +644,7 @@ struct WearModel::Impl {
       idx.reserve(expect);
       val.reserve(expect);
       for (int i = 0; i < p.N; ++i) {
-        const double c = p.s[i];
-        bool done = false;
-        if (opt.hertz_band) {
-          const double a = half_width[i];
-          // Surface distance per unit LOA: rack flank tan a0, pinion involute s/r_b.
-          if (mb == kRack) {
-            const double L = a / ta;
-            if (L > 1e-12 * pb) {
-              band_weights(p.node_c, p.intervals, c, L, idx, val);
-              done = true;
-            }
-          } else if (a > 1e-12 * pb) {
-            const InvoluteWindow win = involute_band_window(c, a, rb, sP);
-            if (win.hi - win.lo > 2e-12 * pb) {
-              band_weights(p.node_c, p.intervals, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo), idx, val);
-              const double thin = p.slide[kPinion][i];
-              if (thin > 0) p.base_circle_window = std::min(p.base_circle_window, win.slide / thin);
-              p.slide[kPinion][i] = win.slide;
-              done = true;
-            }
-          }
-        }
-        if (!done) pointwise_weights(p.node_c, p.intervals, c, idx, val);
+        point_weights(p, point_band(p, mb, i, half_width[i]), idx, val);
         beg.push_back(static_cast<int>(idx.size()));
       }
     }
@@ -756,10 +792,134 @@ struct WearModel::Impl {
     if (s.contact_ratio && !std::isfinite(*s.contact_ratio)) bad("sample.contact_ratio", "must be finite");
   }
 
-  WearLifeResult life(const WearSample& smp, bool snapshots) const;
+  // A life read for its life only, without the profile update, is the
+  // first block's: the point with the fewest passes to failure
+  // G_total / rate and its two neighbours (the parabola's vertex) decide it.
+  // A point's pass load is a weighted mean of the pair loads over its band
+  // (non-negative weights that sum to at most one) times its sliding, so
+  // the largest load of the nodes whose segments meet the band, times the
+  // sliding, bounds it from above, and with it the point's passes to failure
+  // from below. The points are taken in the order of that bound and their
+  // weights built (the same calls and sums as build_weights and pass_loads)
+  // until the bound exceeds the fewest passes found: every point that could
+  // have as few then has its exact pass load, the others none (0, which the
+  // search skips). The bound carries a margin of 1e-6: the rounding of the
+  // weights and of their sum is many orders of magnitude smaller.
+  struct BoundedSearch {
+    std::array<std::vector<PointBand>, 2> band;
+    std::array<std::vector<char>, 2> known;
+    std::vector<double> load;
+    std::vector<int> idx;
+    std::vector<double> val;
+  };
+  double exact_pass_load(const Path& p, BoundedSearch& bs, int mb, int i) const {
+    bs.idx.clear();
+    bs.val.clear();
+    point_weights(p, bs.band[mb][i], bs.idx, bs.val);
+    double w = 0;
+    for (std::size_t k = 0; k < bs.idx.size(); ++k) w += bs.val[k] * bs.load[bs.idx[k]];
+    bs.known[mb][i] = 1;
+    return w * p.slide[mb][i];
+  }
+  // Fills q (exact where known, else 0) for the first block of a life
+  // without update; false when a load is not finite (then nothing is
+  // bounded: the caller builds every weight).
+  bool bounded_pass_loads(Path& p, const std::vector<double>& margin, double Kk, const std::array<double, 2>& rho,
+                          double sig, BoundedSearch& bs, std::array<std::vector<double>, 2>& q) const {
+    bs.load.resize(margin.size());
+    for (std::size_t k = 0; k < margin.size(); ++k) {
+      if (!std::isfinite(margin[k])) return false;
+      bs.load[k] = std::max(margin[k], 0.0);
+    }
+    const std::vector<double> half_width = half_widths(p, margin);
+    // Range maxima of the loads along each interval: level l holds the
+    // maximum of 2^l consecutive nodes (a sparse table).
+    std::vector<std::vector<double>> range_max(p.intervals.size());
+    for (std::size_t v = 0; v < p.intervals.size(); ++v) {
+      const std::vector<int>& iv = p.intervals[v];
+      const int M = static_cast<int>(iv.size());
+      int L = 1;
+      while ((2 << (L - 1)) <= M) ++L;
+      std::vector<double>& t = range_max[v];
+      t.resize(static_cast<std::size_t>(L) * M);
+      for (int j = 0; j < M; ++j) t[j] = bs.load[iv[j]];
+      for (int l = 1; l < L; ++l)
+        for (int j = 0; j + (1 << l) <= M; ++j)
+          t[l * M + j] = std::max(t[(l - 1) * M + j], t[(l - 1) * M + j + (1 << (l - 1))]);
+    }
+    // The largest load of the nodes of every segment that can meet [c - L, c + L]
+    // (one node more at each end than the segments that do: rounding).
+    auto band_max = [&](double c, double L) {
+      double mx = 0;
+      for (std::size_t v = 0; v < p.intervals.size(); ++v) {
+        const std::vector<int>& iv = p.intervals[v];
+        if (iv.size() < 2) continue;
+        if (p.node_c[iv.back()] <= c - L || p.node_c[iv.front()] >= c + L) continue;  // as band_weights: no weight
+        const int M = static_cast<int>(iv.size());
+        const auto lo = std::partition_point(iv.begin(), iv.end(), [&](int n) { return p.node_c[n] <= c - L; });
+        const auto hi = std::partition_point(lo, iv.end(), [&](int n) { return p.node_c[n] < c + L; });
+        const int a = std::max(static_cast<int>(lo - iv.begin()) - 2, 0);
+        const int z = std::min(static_cast<int>(hi - iv.begin()) + 1, M - 1);
+        const int l = std::bit_width(static_cast<unsigned>(z - a + 1)) - 1;
+        const std::vector<double>& t = range_max[v];
+        mx = std::max({mx, t[l * M + a], t[l * M + z - (1 << l) + 1]});
+      }
+      return mx;
+    };
+    const int N = p.N;
+    double fewest = kInf;  // passes to failure, the fewest found
+    auto passes = [&](int mb, double qi) {
+      const double rt = Kk * qi * rho[mb] / sig;  // as the block loop
+      if (rt > 0) fewest = std::min(fewest, G[mb].total() / rt);
+    };
+    std::vector<std::pair<double, int>> order;
+    order.reserve(2 * static_cast<std::size_t>(N));
+    for (int mb = 0; mb < 2; ++mb) {
+      bs.band[mb].resize(N);
+      bs.known[mb].assign(N, 0);
+      q[mb].assign(N, 0.0);
+      for (int i = 0; i < N; ++i) bs.band[mb][i] = point_band(p, mb, i, half_width[i]);
+    }
+    for (int mb = 0; mb < 2; ++mb) {
+      for (int i = 0; i < N; ++i) {
+        const PointBand& band = bs.band[mb][i];
+        if (!band.band) {  // two weights: exact at once
+          q[mb][i] = exact_pass_load(p, bs, mb, i);
+          passes(mb, q[mb][i]);
+          continue;
+        }
+        const double upper = band_max(band.c, band.L) * (1 + 1e-6) * p.slide[mb][i];
+        if (!(upper > 0)) continue;  // no load or no sliding: the pass load is 0
+        order.emplace_back(G[mb].total() / (Kk * upper * rho[mb] / sig), mb * N + i);
+      }
+    }
+    if (order.empty()) return true;
+    // The most promising point first; then only the points whose bound
+    // reaches its passes need sorting (a few tens of the 2N).
+    const auto first = std::min_element(order.begin(), order.end());
+    std::swap(*first, order.front());
+    {
+      const int mb = order.front().second / N, i = order.front().second % N;
+      q[mb][i] = exact_pass_load(p, bs, mb, i);
+      passes(mb, q[mb][i]);
+    }
+    const auto rest = std::partition(order.begin() + 1, order.end(),
+                                     [&](const std::pair<double, int>& o) { return !(o.first > fewest); });
+    std::sort(order.begin() + 1, rest);
+    for (auto it = order.begin() + 1; it != rest; ++it) {
+      if (it->first > fewest) break;
+      const int mb = it->second / N, i = it->second % N;
+      q[mb][i] = exact_pass_load(p, bs, mb, i);
+      passes(mb, q[mb][i]);
+    }
+    return true;
+  }
+
+  WearLifeResult life(const WearSample& smp, Detail detail) const;
 };
 
-WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) const {
+WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const {
+  const bool snapshots = detail == Detail::kFull;
   const auto t0 = std::chrono::steady_clock::now();
   check_sample(smp);
   WearLifeResult res;
@@ -792,23 +952,39 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
   // (NominalStart: from the model's own when the path is the nominal one).
   const bool nominal_path = !smp.contact_ratio && opt.reuse_nominal_start;
   const bool nominal_force = smp.force_scale == 1;
+  const bool update = drive.wear.update_profile;
+  const double f_blk = drive.wear.block_fraction;
   Path local;
   std::vector<double> margin;
+  // The life alone, without the update: the weights of the points that can
+  // decide it only (BoundedSearch), their pass loads in q.
+  std::array<std::vector<double>, 2> q, rate, g_prev;
+  BoundedSearch bs;
+  bool bounded = false;
+  // Without the depths the hardness warnings are unknown: bounded only
+  // where there can be none.
+  const bool may_bound =
+      detail == Detail::kLifeOnly && !update && opt.bounded_life_search && hardness_warnings_impossible();
+  bool weighted_nominal = false;
   if (nominal_path && nominal_force) {
     margin = nominal_start().margin;
+    if (may_bound) {
+      local = nominal_start().path;  // a copy: the search sets the pinion's band sliding
+      bounded = bounded_pass_loads(local, margin, Kk, rho, sig, bs, q);
+    }
+    weighted_nominal = !bounded;
   } else {
     local = nominal_path ? nominal_start().path : make_path(s_start, eps0, clearance);
     const std::vector<double> zero(local.N, 0.0);
     solve(local, zero, zero, F, margin);
-    build_weights(local, margin);
+    bounded = may_bound && bounded_pass_loads(local, margin, Kk, rho, sig, bs, q);
+    if (!bounded) build_weights(local, margin);
   }
-  const Path& p = nominal_path && nominal_force ? nominal_start().weighted : local;
+  const Path& p = weighted_nominal ? nominal_weighted() : local;
   const int N = p.N;
   std::array<std::vector<double>, 2> h{std::vector<double>(N, 0.0), std::vector<double>(N, 0.0)};
   std::array<std::vector<double>, 2> g = h;  // G(h) per point (model hardness units)
   long solves = 1;
-  const bool update = drive.wear.update_profile;
-  const double f_blk = drive.wear.block_fraction;
 
   // History at block boundaries for the snapshots (G is linear in n inside a block).
   std::vector<double> hist_n{0.0}, hist_eps{eps0};
@@ -822,13 +998,12 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
   if (snapshots)
     for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
 
-  std::array<std::vector<double>, 2> q, rate, g_prev;
   double n = 0, eps = eps0;
   int limiting_member = kRack, limiting_point = -1;
   const long max_blocks = static_cast<long>(2.0 * N / f_blk) + 10;
   for (long blk = 0;; ++blk) {
     if (blk > max_blocks) throw std::runtime_error("wear: block limit exceeded (internal error)");
-    pass_loads(p, margin, q);
+    if (!bounded) pass_loads(p, margin, q);
     // dG/dn per rack pass (G in unscaled hardness units: the sample's G is sig G).
     double n_fail = kInf, n_blk = kInf;
     int fm = -1, fi = -1;
@@ -848,6 +1023,13 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
       }
     }
     if (fm < 0) throw DesignError("no_wear", "wear: no point of either flank slides under load");
+    if (bounded) {
+      for (int i : {fi - 1, fi + 1}) {
+        if (i < 0 || i >= N || bs.known[fm][i]) continue;
+        q[fm][i] = exact_pass_load(p, bs, fm, i);
+        rate[fm][i] = Kk * q[fm][i] * rho[fm] / sig;
+      }
+    }
     // The deepest wear lies between profile points in general: take the
     // vertex of the parabola through the passes-to-failure of the first
     // failing point and its neighbours. Without it the life jumps as the
@@ -865,7 +1047,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
     }
     res.blocks = static_cast<int>(blk + 1);
     if (n_fail <= n_blk) {
-      for (int mb = 0; mb < 2; ++mb)
+      for (int mb = 0; mb < 2 && !bounded; ++mb)  // bounded: no profiles
         for (int i = 0; i < N; ++i) {
           g[mb][i] += rate[mb][i] * n_fail;
           h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
@@ -939,10 +1121,12 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
   res.life_pinion_cycles = n * rho_pinion;
   res.life_years = per_year > 0 ? n / per_year : 0.0;
   res.final_contact_ratio = eps;
-  res.pinion = profile(p, kPinion, h[kPinion]);
-  res.rack = profile(p, kRack, h[kRack]);
-  double best = -1;
-  for (int mb = 0; mb < 2; ++mb)
+  if (!bounded) {  // bounded: the depths were not integrated
+    res.pinion = profile(p, kPinion, h[kPinion]);
+    res.rack = profile(p, kRack, h[kRack]);
+  }
+  double best = bounded ? 0 : -1;
+  for (int mb = 0; mb < 2 && !bounded; ++mb)
     for (int i = 0; i < N; ++i)
       if (h[mb][i] > best) {
         best = h[mb][i];
@@ -1002,7 +1186,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, bool snapshots) cons
   }
 
   // Warnings.
-  for (int mb = 0; mb < 2; ++mb) {
+  for (int mb = 0; mb < 2 && !bounded; ++mb) {
     const double deepest = *std::max_element(h[mb].begin(), h[mb].end());
     const HardnessModel& hm = hardness[mb];
     if (deepest > hm.first_clamped_depth()) {
@@ -1037,9 +1221,9 @@ WearModel::~WearModel() = default;
 WearModel::WearModel(WearModel&&) noexcept = default;
 WearModel& WearModel::operator=(WearModel&&) noexcept = default;
 
-WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample, true); }
+WearLifeResult WearModel::life(const WearSample& sample) const { return impl_->life(sample, Detail::kFull); }
 WearLifeResult WearModel::life(const WearSample& sample, Detail detail) const {
-  return impl_->life(sample, detail == Detail::kFull);
+  return impl_->life(sample, detail);
 }
 
 WearModel::PassWear WearModel::initial_wear_per_pass(const WearSample& smp) const {

@@ -126,6 +126,15 @@ struct WearOptions {
   // Tabulating H is a fixed cost of every model; the integral's relative
   // error is about H'' dh^2 / (12 H), below 1e-9 for the shipped profiles.
   int hardness_cells = 2048;
+  // A life read for its life only (Detail::kLifeOnly) without the profile
+  // update, where no depth can pass a member's measured hardness data before
+  // its limit (so no warning needs the depths), is decided by the first
+  // point to reach its limit and that point's neighbours. With this on, a point's band weights are built only
+  // when an upper bound of its wear rate (the largest pair load over its
+  // band times its sliding) could make it that point; the life, criterion,
+  // limiting member and reason are the same bits as with every point's
+  // weights (false: every point's, the reference the tests compare with).
+  bool bounded_life_search = true;
 };
 
 class WearModel {
@@ -146,11 +155,16 @@ class WearModel {
   // non-finite scale or a non-finite contact ratio; every other outcome is a
   // finite result (contact ratio out of range: life 0 with the reason).
   WearLifeResult life(const WearSample& sample = {}) const;
-  // What a life fills in: everything, or everything but the snapshots
-  // (empty), for callers that read only the life and its criterion (the
-  // reliability's table, quantile and sample lives). The other fields are
-  // the same bits either way.
-  enum class Detail { kFull, kNoSnapshots };
+  // What a life fills in: everything; everything but the snapshots (empty;
+  // the other fields are the same bits); or the life alone, for callers that
+  // read only the life, its criterion and its warnings (the reliability's
+  // table, quantile and sample lives, the metrics' nominal life):
+  // life_cycles, life_pinion_cycles, life_years, criterion, reason,
+  // limiting_member, the contact ratios, warnings, blocks and load_solves are
+  // the same bits as the full result's, while the profiles and the deepest
+  // wear may be left empty (they are without the profile update when no
+  // depth can pass the measured hardness data: WearOptions::bounded_life_search).
+  enum class Detail { kFull, kNoSnapshots, kLifeOnly };
   WearLifeResult life(const WearSample& sample, Detail detail) const;
 
   // Wear per pass of the unworn flanks [m per own pass] along both profiles

@@ -146,7 +146,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   WearReliabilityResult out;
   const WearModel model(drive);
   auto t0 = std::chrono::steady_clock::now();
-  out.nominal = model.life();
+  out.nominal = model.life({}, opt.nominal_detail);
   out.nominal_ms = ms_since(t0);
 
   const ReliabilitySpec& spec = drive.reliability;
@@ -222,9 +222,9 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   out.samples_used = static_cast<long>(n);
   out.criteria.assign(n, std::string());
 
-  // Every life below but the nominal one is read for its years and
-  // criterion only: no snapshots.
-  constexpr WearModel::Detail kLifeOnly = WearModel::Detail::kNoSnapshots;
+  // Every life below but the nominal one is read for its years, criterion
+  // and limiting member only: no snapshots, no profiles.
+  constexpr WearModel::Detail kLifeOnly = WearModel::Detail::kLifeOnly;
   auto life_of = [&](double x) { return model.life(wear_sample_for(drive, inputs, {x}), kLifeOnly); };
 
 

@@ -75,6 +75,10 @@ struct WearReliabilityOptions {
   // status is nullopt and samples_used 0. Otherwise (several inputs, or no
   // valid value) the samples are drawn as usual.
   bool exact_only = false;
+  // What the nominal life fills in (WearModel::Detail): everything for the
+  // wear report; the life alone for a caller that reads its life, criterion
+  // and warnings only (the metrics).
+  WearModel::Detail nominal_detail = WearModel::Detail::kFull;
   // Samples [first, last) only: the run does the same set-up (the nominal
   // life, the samples' inputs, the life table), computes those samples and
   // returns at once with share_lives set (no summary, no exact results).
