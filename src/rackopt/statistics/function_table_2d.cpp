@@ -118,6 +118,13 @@ FunctionTable2D FunctionTable2D::build(const std::function<TaggedValue(double, d
                              !std::is_sorted(o.x_nodes.begin(), o.x_nodes.end()) ||
                              std::adjacent_find(o.x_nodes.begin(), o.x_nodes.end()) != o.x_nodes.end()))
     bad("x_nodes must ascend strictly from ax to bx, at least 3 of them");
+  if (!o.y_nodes.empty() && (o.y_nodes.size() < 3 || o.y_nodes.front() != ay || o.y_nodes.back() != by ||
+                             !std::is_sorted(o.y_nodes.begin(), o.y_nodes.end()) ||
+                             std::adjacent_find(o.y_nodes.begin(), o.y_nodes.end()) != o.y_nodes.end()))
+    bad("y_nodes must ascend strictly from ay to by, at least 3 of them");
+  if (!o.known_row.empty() && (o.known_row.size() != o.x_nodes.size() ||
+                               std::find(o.y_nodes.begin(), o.y_nodes.end(), o.known_row_y) == o.y_nodes.end()))
+    bad("known_row needs x_nodes of its length and known_row_y among y_nodes");
 
   FunctionTable2D t;
   auto evaluate = [&](const std::vector<std::pair<double, double>>& p) {
@@ -140,14 +147,27 @@ FunctionTable2D FunctionTable2D::build(const std::function<TaggedValue(double, d
   t.root_ = std::make_unique<Grid>();
   Grid& root = *t.root_;
   root.x = o.x_nodes.empty() ? uniform(ax, bx, o.nodes_x) : o.x_nodes;
-  root.y = uniform(ay, by, o.nodes_y);
+  root.y = o.y_nodes.empty() ? uniform(ay, by, o.nodes_y) : o.y_nodes;
   {
     std::vector<std::pair<double, double>> p;
-    for (double yv : root.y)
-      for (double xv : root.x) p.emplace_back(xv, yv);
-    for (const TaggedValue& v : evaluate(p)) {
-      root.v.push_back(v.value);
-      root.tag.push_back(v.tag);
+    std::vector<std::size_t> at;
+    root.v.assign(root.x.size() * root.y.size(), 0.0);
+    root.tag.assign(root.v.size(), 0);
+    for (std::size_t j = 0; j < root.y.size(); ++j)
+      for (std::size_t i = 0; i < root.x.size(); ++i) {
+        const std::size_t k = j * root.x.size() + i;
+        if (!o.known_row.empty() && root.y[j] == o.known_row_y) {
+          root.v[k] = o.known_row[i].value;
+          root.tag[k] = o.known_row[i].tag;
+        } else {
+          p.emplace_back(root.x[i], root.y[j]);
+          at.push_back(k);
+        }
+      }
+    const std::vector<TaggedValue> pv = evaluate(p);
+    for (std::size_t k = 0; k < pv.size(); ++k) {
+      root.v[at[k]] = pv[k].value;
+      root.tag[at[k]] = pv[k].tag;
     }
   }
 

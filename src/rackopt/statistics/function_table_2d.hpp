@@ -43,6 +43,13 @@ struct FunctionTable2DOptions {
   // >= 3) instead of nodes_x uniform ones, e.g. the nodes a 1-D table placed
   // where f changes fastest along x.
   std::vector<double> x_nodes;
+  // The same for y (nodes_y uniform ones when empty).
+  std::vector<double> y_nodes;
+  // f's values at (x_nodes, known_row_y) when already computed (known_row
+  // as long as x_nodes, known_row_y one of y_nodes): that row is not
+  // evaluated again.
+  double known_row_y = 0;
+  std::vector<TaggedValue> known_row;
   double rel_tolerance = 5e-4;   // centre check, relative to |direct|
   double abs_tolerance = 0;      // centre check, absolute (>= 0)
   int max_levels = 2;            // quarterings of a failing cell

@@ -313,6 +313,22 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
             rx->first, rx->second, o1);
         to.x_nodes = along.x();
         extra = along.evaluations();
+        // With the second input's design value among the y nodes (uniform
+        // on either side of it), the 1-D table's nodes are that row.
+        const double y0 = design_value(drive, inputs[ti1].key, model.nominal_contact_ratio());
+        if (y0 > ry->first && y0 < ry->second && to.nodes_y >= 3) {
+          const int below = std::clamp(static_cast<int>(std::lround((to.nodes_y - 1) * (y0 - ry->first) /
+                                                                    (ry->second - ry->first))),
+                                       1, to.nodes_y - 2);
+          const int above = to.nodes_y - 1 - below;
+          for (int k = 0; k < below; ++k) to.y_nodes.push_back(ry->first + (y0 - ry->first) * k / below);
+          to.y_nodes.push_back(y0);
+          for (int k = 1; k < above; ++k) to.y_nodes.push_back(y0 + (ry->second - y0) * k / above);
+          to.y_nodes.push_back(ry->second);
+          to.known_row_y = y0;
+          for (std::size_t k = 0; k < along.x().size(); ++k)
+            to.known_row.push_back({along.y()[k], along.tags()[k]});
+        }
         table2 = statistics::FunctionTable2D::build(
             [&](double x, double y) {
               const WearLifeResult r = model.life(wear_sample_for(drive, pair_inputs, {x, y}), kLifeOnly);
