@@ -278,8 +278,6 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   }
   if (!opt.life_table) {
     tr.not_used = "life_table option off";
-  } else if (dim != 1 && !scaled) {
-    tr.not_used = "several random inputs shape the life (contact_ratio and load): one model life per sample";
   } else if (scaled_nominal) {
     tr.not_used = "every random input scales the life: each sample is the nominal life times its factor";
   } else if (two_d) {

@@ -62,8 +62,9 @@ struct WearReliabilityOptions {
   // table"). Several inputs of which at most one is the contact ratio or the
   // load: the table along that input (or the nominal life) times each
   // sample's exact factor for the wear coefficient and the hardness
-  // (wear_reliability/life_scaling.hpp). false = one direct life per sample
-  // and R(t) by bisection.
+  // (wear_reliability/life_scaling.hpp); both of them: the two-input table
+  // below, times that factor. false = one direct life per sample and R(t) by
+  // bisection.
   bool life_table = true;
   int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
@@ -114,11 +115,12 @@ struct WearReliabilityOptions {
 WearReliabilityOptions wear_reliability_options(const Drive& drive);
 
 // How the life table was used (empty when it was not): over the one random
-// input, or over the one input that shapes the life when every other input
-// scales it exactly (wear_reliability/life_scaling.hpp).
+// input, over the one input that shapes the life when every other input
+// scales it exactly (wear_reliability/life_scaling.hpp), or over the two that
+// shape it (the two-input table: input and input2).
 struct LifeTableReport {
   bool used = false;
-  std::string not_used;            // why not (several shaping inputs, option off, model error, ...)
+  std::string not_used;            // why not (option off, model error, ...)
   std::string input;               // the tabulated input's key
   std::string input2;              // the second tabulated input's key (two shaping inputs), else empty
   // Several inputs: those applied to each sample as the exact factor on the
