@@ -139,7 +139,8 @@ BENCHMARK(BM_LifeAtR)
 // ratio + load), table (1 = the default: the table along the one input that
 // shapes the life times each sample's exact factor for the others,
 // wear_reliability/life_scaling.hpp; 0 = one model life per sample). With
-// inputs 3 both inputs shape the life: one model life per sample either way.
+// inputs 3 both inputs shape the life: the two-input table (table 1) or one
+// model life per sample (table 0).
 void BM_LifeAtRSeveralInputs(benchmark::State& state) {
   rackopt::Drive d = ship_lift();
   auto relative_normal = [](const char* key, double cv) {
@@ -180,6 +181,7 @@ BENCHMARK(BM_LifeAtRSeveralInputs)
     ->Args({1, 1})
     ->Args({2, 1})
     ->Args({3, 1})
+    ->Args({3, 0})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 

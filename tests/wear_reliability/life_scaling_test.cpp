@@ -4,7 +4,7 @@
 // sigma / k up to rounding, whatever the criterion; with at most one input
 // that shapes the life the samples come from the table along it (or the
 // nominal life) times that factor, within the table's tolerance of the direct
-// lives; with two shaping inputs every sample is a direct life, as before.
+// lives (two shaping inputs: two_shaping_inputs_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,19 +132,6 @@ TEST(LifeScaling, NoShapingInputUsesTheNominalLife) {
     EXPECT_LT(relative(fast.lives[i].value, direct.lives[i].value), 1e-12) << i;
     EXPECT_EQ(fast.criteria[i], direct.criteria[i]) << i;
   }
-}
-
-// Contact ratio and load both shape the life: direct lives, as with the
-// table off, bit for bit.
-TEST(LifeScaling, TwoShapingInputsKeepDirectLives) {
-  Drive d = test::ship_lift_fixed_profile();
-  d.reliability.inputs.push_back(scaled_normal("load", 0.05));
-  const WearReliabilityResult a = run_wear_reliability(d, scaling_run(16, true));
-  const WearReliabilityResult b = run_wear_reliability(d, scaling_run(16, false));
-  EXPECT_FALSE(a.table.used);
-  EXPECT_TRUE(a.table.scaling_inputs.empty());
-  EXPECT_EQ(a.table.samples_direct, 16u);
-  for (std::size_t i = 0; i < a.lives.size(); ++i) EXPECT_EQ(a.lives[i].value, b.lives[i].value) << i;
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "rackopt/wear_reliability/sample_domain.hpp"
 #include "rackopt/statistics/distribution.hpp"
 #include "rackopt/statistics/function_table.hpp"
+#include "rackopt/statistics/function_table_2d.hpp"
 #include "rackopt/statistics/sampling.hpp"
 
 namespace rackopt {
@@ -232,13 +233,18 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   // or the load): the others scale it exactly (life_scaling.hpp), so each
   // sample is the life along that one input, from the table below, times its
   // factor; with none, the nominal life times its factor.
-  std::size_t shaping = 0, ti = 0;  // inputs that shape the life; the tabulated input
+  // Two that shape it (the contact ratio and the load): the two-input table
+  // over both, times the others' factor.
+  std::size_t shaping = 0, ti = 0, ti1 = 0;  // inputs that shape the life; the tabulated input(s)
   for (std::size_t k = 0; k < dim; ++k) {
     if (input_scales_life(inputs[k].key)) continue;
+    if (shaping == 0) ti1 = k;
     ++shaping;
     ti = k;
   }
-  const bool scaled = dim > 1 && shaping <= 1 && opt.life_table;
+  const bool two_d = dim > 1 && shaping == 2 && opt.life_table;
+  if (two_d) std::swap(ti, ti1);  // ti the first shaping input, ti1 the second
+  const bool scaled = dim > 1 && (shaping <= 1 || two_d) && opt.life_table;
   const bool scaled_nominal = scaled && shaping == 0;
   const InputBounds tb = dim == 1 ? one : bounds_of(ti);
   const std::vector<RandomInput> table_inputs{inputs[ti]};
@@ -250,30 +256,111 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   // drawn.
   t0 = std::chrono::steady_clock::now();
   std::optional<statistics::FunctionTable> table;
+  std::optional<statistics::FunctionTable2D> table2;
   LifeTableReport& tr = out.table;
+  constexpr double kTail = 1e-9;
+  // The tabulated range of input k: its [1e-9, 1 - 1e-9] quantiles clipped
+  // to the inputs that do not fail at once; empty when nothing is left.
+  auto range_of = [&](std::size_t k, const InputBounds& b) -> std::optional<std::pair<double, double>> {
+    // A positive input's lowest node stays above 0 (the value at v0 is 0).
+    const double ql = std::max(b.qa, kTail) + (b.positive && b.v0 > 0 ? kTail : 0.0);
+    const double qh = std::min(b.qb, 1.0 - kTail);
+    // Quantiles only strictly inside (0, 1): a scatter wholly outside the
+    // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
+    if (!(qh > ql)) return std::nullopt;
+    const double lo = std::max(b.xa, dist[k].quantile(ql)), hi = std::min(b.xb, dist[k].quantile(qh));
+    if (!(hi > lo)) return std::nullopt;
+    return std::pair{lo, hi};
+  };
   if (scaled) {
     for (std::size_t k = 0; k < dim; ++k)
       if (input_scales_life(inputs[k].key)) tr.scaling_inputs.push_back(inputs[k].key);
   }
   if (!opt.life_table) {
     tr.not_used = "life_table option off";
-  } else if (dim != 1 && !scaled) {
-    tr.not_used = "several random inputs shape the life (contact_ratio and load): one model life per sample";
   } else if (scaled_nominal) {
     tr.not_used = "every random input scales the life: each sample is the nominal life times its factor";
+  } else if (two_d) {
+    const auto rx = range_of(ti, tb), ry = range_of(ti1, bounds_of(ti1));
+    if (!rx || !ry) {
+      tr.not_used = "almost every sample fails at once or lies outside an input's domain";
+    } else {
+      const std::vector<RandomInput> pair_inputs{inputs[ti], inputs[ti1]};
+      int extra = 0;
+      statistics::FunctionTable2DOptions to;
+      to.nodes_y = opt.life_table_2d_nodes;
+      to.max_levels = opt.life_table_2d_max_levels;
+      to.rel_tolerance = opt.life_table_tolerance;
+      to.max_evaluations = opt.life_table_2d_max_evaluations;
+      to.threads = threads;
+      try {
+        // The life's fine structure along the contact ratio (where the
+        // discretised profile's contacts change) stays at the same contact
+        // ratios as the load changes: the 1-D table along the first input,
+        // at the second's design value, places the grid's x nodes there.
+        statistics::FunctionTableOptions o1;
+        o1.initial_nodes = opt.life_table_nodes;
+        o1.rel_tolerance = opt.life_table_tolerance;
+        o1.max_evaluations = opt.life_table_max_evaluations;
+        o1.threads = threads;
+        const statistics::FunctionTable along = statistics::FunctionTable::build(
+            [&](double x) {
+              const WearLifeResult r = table_life(x);
+              return statistics::TaggedValue{r.life_years, criterion_tag(r)};
+            },
+            rx->first, rx->second, o1);
+        to.x_nodes = along.x();
+        extra = along.evaluations();
+        // With the second input's design value among the y nodes (uniform
+        // on either side of it), the 1-D table's nodes are that row.
+        const double y0 = design_value(drive, inputs[ti1].key, model.nominal_contact_ratio());
+        if (y0 > ry->first && y0 < ry->second && to.nodes_y >= 3) {
+          const int below = std::clamp(static_cast<int>(std::lround((to.nodes_y - 1) * (y0 - ry->first) /
+                                                                    (ry->second - ry->first))),
+                                       1, to.nodes_y - 2);
+          const int above = to.nodes_y - 1 - below;
+          for (int k = 0; k < below; ++k) to.y_nodes.push_back(ry->first + (y0 - ry->first) * k / below);
+          to.y_nodes.push_back(y0);
+          for (int k = 1; k < above; ++k) to.y_nodes.push_back(y0 + (ry->second - y0) * k / above);
+          to.y_nodes.push_back(ry->second);
+          to.known_row_y = y0;
+          for (std::size_t k = 0; k < along.x().size(); ++k)
+            to.known_row.push_back({along.y()[k], along.tags()[k]});
+        }
+        table2 = statistics::FunctionTable2D::build(
+            [&](double x, double y) {
+              const WearLifeResult r = model.life(wear_sample_for(drive, pair_inputs, {x, y}), kLifeOnly);
+              return statistics::TaggedValue{r.life_years, criterion_tag(r)};
+            },
+            rx->first, rx->second, ry->first, ry->second, to);
+      } catch (const InputError& e) {
+        tr.not_used = std::string("the model rejected a table node: ") + e.what();
+      } catch (const DesignError& e) {
+        tr.not_used = std::string("the model failed at a table node: ") + e.what();
+      }
+      if (table2) {
+        tr.used = true;
+        tr.input = inputs[ti].key;
+        tr.input2 = inputs[ti1].key;
+        tr.x_min = rx->first;
+        tr.x_max = rx->second;
+        tr.y_min = ry->first;
+        tr.y_max = ry->second;
+        tr.nodes = static_cast<int>(table2->x().size() * table2->y().size());
+        tr.evaluations = table2->evaluations() + extra;
+        tr.max_check_error = table2->max_check_error();
+        tr.uncovered_fraction = table2->uncovered_fraction();
+        tr.cells = table2->cells();
+        tr.cells_verified = table2->cells_verified();
+        tr.cells_with_switch = table2->cells_with_switch();
+      }
+    }
   } else {
-    constexpr double kTail = 1e-9;
-    // A positive input's lowest node stays above 0 (the value at v0 is 0).
-    const double ql = std::max(tb.qa, kTail) + (tb.positive && tb.v0 > 0 ? kTail : 0.0);
-    const double qh = std::min(tb.qb, 1.0 - kTail);
-    // Quantiles only strictly inside (0, 1): a scatter wholly outside the
-    // bounds (e.g. shifted above eps_max) has qh = 0 or ql = 1.
-    const bool inside = qh > ql;
-    const double lo = inside ? std::max(tb.xa, dist[ti].quantile(ql)) : 0.0;
-    const double hi = inside ? std::min(tb.xb, dist[ti].quantile(qh)) : 0.0;
-    if (!inside || !(hi > lo)) {
+    const auto range = range_of(ti, tb);
+    if (!range) {
       tr.not_used = "almost every sample fails at once or lies outside the input's domain";
     } else {
+      const double lo = range->first, hi = range->second;
       statistics::FunctionTableOptions to;
       to.initial_nodes = opt.life_table_nodes;
       to.rel_tolerance = opt.life_table_tolerance;
@@ -312,6 +399,15 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     if (!outside[i].empty()) throw DesignError("sample_outside_domain", outside[i]);
     double years;
     const double x = out.input_values[i][ti];
+    if (table2) {
+      const std::optional<statistics::TaggedValue> v = (*table2)(x, out.input_values[i][ti1]);
+      if (v) {
+        years = v->value * life_scale(wear_sample_for(drive, inputs, out.input_values[i]));
+        out.criteria[i] = criterion_of_tag(v->tag);
+        interpolated.fetch_add(1, std::memory_order_relaxed);
+        return years * kSecondsPerYear;
+      }
+    }
     if (table && table->covers(x)) {
       const statistics::TaggedValue v = *(*table)(x);
       years = scaled ? v.value * life_scale(wear_sample_for(drive, inputs, out.input_values[i])) : v.value;
@@ -358,7 +454,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     out.lives = statistics::evaluate_samples(n, threads, sample_life);
   }
   if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the Monte Carlo samples");
-  tr.samples_interpolated = table || scaled_nominal ? interpolated.load() : 0;
+  tr.samples_interpolated = table || table2 || scaled_nominal ? interpolated.load() : 0;
   tr.samples_direct = n - tr.samples_interpolated;
   out.samples_ms = ms_since(t0);
 

@@ -62,12 +62,27 @@ struct WearReliabilityOptions {
   // table"). Several inputs of which at most one is the contact ratio or the
   // load: the table along that input (or the nominal life) times each
   // sample's exact factor for the wear coefficient and the hardness
-  // (wear_reliability/life_scaling.hpp). false = one direct life per sample
-  // and R(t) by bisection.
+  // (wear_reliability/life_scaling.hpp); both of them: the two-input table
+  // below, times that factor. false = one direct life per sample and R(t) by
+  // bisection.
   bool life_table = true;
   int life_table_nodes = 5;               // initial nodes, uniform in the input (refined by the check)
   double life_table_tolerance = 5e-4;     // relative midpoint check of every interval
   int life_table_max_evaluations = 96;    // model lives the table may use
+  // Two inputs that shape the life (the contact ratio and the load): a
+  // verified table over both (statistics/function_table_2d.hpp). Its nodes
+  // along the first are those of the one-input table along it (at the
+  // second's design value, with the options above); along the second,
+  // life_table_2d_nodes uniform ones. Every cell is checked at its centre to
+  // life_table_tolerance; failing cells are quartered up to max_levels times
+  // while the grid's lives stay within max_evaluations; samples in cells
+  // left unverified get direct lives. Quartering is off by default: a
+  // quarter-grid costs 8 or 9 lives, more than the direct lives of the few
+  // samples a cell holds at 1000 samples (on the ship lift, 5 quartered
+  // cells cost 40 lives and left the same 16 samples direct).
+  int life_table_2d_nodes = 7;
+  int life_table_2d_max_levels = 0;
+  int life_table_2d_max_evaluations = 360;
   // For a caller that reads only the exact results (the wear_life_at_R
   // metric's exact path): when the exact quantile map is available (one
   // random input with a valid value of positive probability), no Monte Carlo
@@ -100,19 +115,23 @@ struct WearReliabilityOptions {
 WearReliabilityOptions wear_reliability_options(const Drive& drive);
 
 // How the life table was used (empty when it was not): over the one random
-// input, or over the one input that shapes the life when every other input
-// scales it exactly (wear_reliability/life_scaling.hpp).
+// input, over the one input that shapes the life when every other input
+// scales it exactly (wear_reliability/life_scaling.hpp), or over the two that
+// shape it (the two-input table: input and input2).
 struct LifeTableReport {
   bool used = false;
-  std::string not_used;            // why not (several shaping inputs, option off, model error, ...)
+  std::string not_used;            // why not (option off, model error, ...)
   std::string input;               // the tabulated input's key
+  std::string input2;              // the second tabulated input's key (two shaping inputs), else empty
   // Several inputs: those applied to each sample as the exact factor on the
   // table's life, or on the nominal life when no input shapes it (then
   // used = false and samples_interpolated counts those samples).
   std::vector<std::string> scaling_inputs;
   double x_min = 0, x_max = 0;     // tabulated input range (SI): the [1e-9, 1 - 1e-9] quantiles
                                    // clipped to the inputs that do not fail at once
-  int nodes = 0;
+  double y_min = 0, y_max = 0;     // the second input's range (two shaping inputs)
+  int nodes = 0;                   // two shaping inputs: of the initial grid
+  int cells = 0, cells_verified = 0, cells_with_switch = 0;  // two shaping inputs: the finest cells
   int evaluations = 0;             // model lives spent on the table (nodes + checks)
   double max_check_error = 0;      // largest relative midpoint error accepted
   double uncovered_fraction = 0;   // of [x_min, x_max], left to direct evaluation
