@@ -272,6 +272,30 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
     if (!(hi > lo)) return std::nullopt;
     return std::pair{lo, hi};
   };
+  // The one-input table of the life along input ti over [lo, hi].
+  auto one_input_table = [&](double lo, double hi) {
+    statistics::FunctionTableOptions o;
+    o.initial_nodes = opt.life_table_nodes;
+    o.rel_tolerance = opt.life_table_tolerance;
+    o.max_evaluations = opt.life_table_max_evaluations;
+    o.threads = threads;
+    return statistics::FunctionTable::build(
+        [&](double x) {
+          const WearLifeResult r = table_life(x);
+          return statistics::TaggedValue{r.life_years, criterion_tag(r)};
+        },
+        lo, hi, o);
+  };
+  // Builds a table; a node the model rejects leaves the tables unused, saying why.
+  auto build_or_say_why = [&](auto&& build) {
+    try {
+      build();
+    } catch (const InputError& e) {
+      tr.not_used = std::string("the model rejected a table node: ") + e.what();
+    } catch (const DesignError& e) {
+      tr.not_used = std::string("the model failed at a table node: ") + e.what();
+    }
+  };
   if (scaled) {
     for (std::size_t k = 0; k < dim; ++k)
       if (input_scales_life(inputs[k].key)) tr.scaling_inputs.push_back(inputs[k].key);
@@ -293,22 +317,12 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       to.rel_tolerance = opt.life_table_tolerance;
       to.max_evaluations = opt.life_table_2d_max_evaluations;
       to.threads = threads;
-      try {
+      build_or_say_why([&] {
         // The life's fine structure along the contact ratio (where the
         // discretised profile's contacts change) stays at the same contact
         // ratios as the load changes: the 1-D table along the first input,
         // at the second's design value, places the grid's x nodes there.
-        statistics::FunctionTableOptions o1;
-        o1.initial_nodes = opt.life_table_nodes;
-        o1.rel_tolerance = opt.life_table_tolerance;
-        o1.max_evaluations = opt.life_table_max_evaluations;
-        o1.threads = threads;
-        const statistics::FunctionTable along = statistics::FunctionTable::build(
-            [&](double x) {
-              const WearLifeResult r = table_life(x);
-              return statistics::TaggedValue{r.life_years, criterion_tag(r)};
-            },
-            rx->first, rx->second, o1);
+        const statistics::FunctionTable along = one_input_table(rx->first, rx->second);
         to.x_nodes = along.x();
         extra = along.evaluations();
         // With the second input's design value among the y nodes (uniform
@@ -333,11 +347,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
               return statistics::TaggedValue{r.life_years, criterion_tag(r)};
             },
             rx->first, rx->second, ry->first, ry->second, to);
-      } catch (const InputError& e) {
-        tr.not_used = std::string("the model rejected a table node: ") + e.what();
-      } catch (const DesignError& e) {
-        tr.not_used = std::string("the model failed at a table node: ") + e.what();
-      }
+      });
       if (table2) {
         tr.used = true;
         tr.input = inputs[ti].key;
@@ -361,23 +371,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       tr.not_used = "almost every sample fails at once or lies outside the input's domain";
     } else {
       const double lo = range->first, hi = range->second;
-      statistics::FunctionTableOptions to;
-      to.initial_nodes = opt.life_table_nodes;
-      to.rel_tolerance = opt.life_table_tolerance;
-      to.max_evaluations = opt.life_table_max_evaluations;
-      to.threads = threads;
-      try {
-        table = statistics::FunctionTable::build(
-            [&](double x) {
-              const WearLifeResult r = table_life(x);
-              return statistics::TaggedValue{r.life_years, criterion_tag(r)};
-            },
-            lo, hi, to);
-      } catch (const InputError& e) {
-        tr.not_used = std::string("the model rejected a table node: ") + e.what();
-      } catch (const DesignError& e) {
-        tr.not_used = std::string("the model failed at a table node: ") + e.what();
-      }
+      build_or_say_why([&] { table = one_input_table(lo, hi); });
       if (table) {
         tr.used = true;
         tr.input = inputs[ti].key;
