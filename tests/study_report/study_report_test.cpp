@@ -522,9 +522,11 @@ TEST(StudyReport, NearDuplicateWarningsAreOneGroupWithTheirCountAndDesigns) {
   EXPECT_EQ(g["evaluations"].size(), kMaxListedEvaluations);
   EXPECT_EQ(g["evaluations"][16], 17);
   EXPECT_EQ(g["best_design"], true);
-  EXPECT_EQ(j["warning_groups"][1]["designs"], 4);
-  EXPECT_EQ(j["warning_groups"][1]["best_design"], false);
-  EXPECT_EQ(j["warning_groups"][2]["example"], "the best design's own remark");
+  EXPECT_EQ(j["warning_groups"][1]["example"], "the best design's own remark");
+  EXPECT_EQ(j["warning_groups"][1]["designs"], 1);
+  EXPECT_EQ(j["warning_groups"][1]["best_design"], true);
+  EXPECT_EQ(j["warning_groups"][2]["designs"], 4);
+  EXPECT_EQ(j["warning_groups"][2]["best_design"], false);
   EXPECT_EQ(j["warning_kinds_dropped"], 0);
   EXPECT_EQ(j["warnings"][0], r.best->warnings[0]);
   EXPECT_EQ(j["warnings"].size(), r.warnings.size());  // the best design's two are among the run's first 20
