@@ -69,7 +69,8 @@ std::string variables_at_bounds_markdown(const StudySpec& spec, const OptimumExp
   }
   const std::string within = format_number(100 * tolerance_fraction, 3) + " % of its range";
   if (any) {
-    o << ". A variable is at a bound within " << within << " of it (the solver's step tolerance, at least 0.1 %).\n\n";
+    o << ". A variable counts as at a bound when it is within " << within
+      << " from it (the solver's step tolerance, at least 0.1 %).\n\n";
   } else {
     o << "No continuous variable is at a bound (within " << within << ").\n\n";
   }
