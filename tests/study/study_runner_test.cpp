@@ -16,6 +16,7 @@
 #include "rackopt/solvers/pareto.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study/study_problem.hpp"
+#include "rackopt/study/warning_groups.hpp"
 #include "study_test_support.hpp"
 #include "support/sql_text.hpp"
 
@@ -571,6 +572,33 @@ TEST(StudyResume, ReusedDesignsBringTheirWarningsInTheOrderOfAnUninterruptedRun)
   EXPECT_EQ(bits(resumed.best->x), bits(full.best->x));
   EXPECT_EQ(resumed.best->warnings, full.best->warnings);
   EXPECT_EQ(full.best->warnings, problem.evaluate_design(full.best->x).warnings);
+
+  // Grouped by kind: each group counts exactly the recorded designs with a
+  // warning of its kind and names them by their row id; the best design's
+  // id is its row. A resumed run groups alike.
+  const auto full_rows = rows_of(full, s);
+  ASSERT_FALSE(full.warning_groups.empty());
+  for (const WarningGroup& g : full.warning_groups) {
+    std::vector<std::int64_t> ids;
+    for (const auto& row : full_rows)
+      for (const auto& w : row.warnings)
+        if (warning_kind(w) == g.kind) {
+          ids.push_back(row.id);
+          break;
+        }
+    EXPECT_EQ(g.designs, ids.size()) << g.kind;
+    ids.resize(std::min(ids.size(), kMaxListedEvaluations));
+    EXPECT_EQ(g.evaluations, ids) << g.kind;
+  }
+  ASSERT_GT(full.best->evaluation_id, 0);
+  EXPECT_EQ(bits(full_rows.at(static_cast<std::size_t>(full.best->evaluation_id - 1)).x), bits(full.best->x));
+  ASSERT_EQ(resumed.warning_groups.size(), full.warning_groups.size());
+  for (std::size_t k = 0; k < full.warning_groups.size(); ++k) {
+    EXPECT_EQ(resumed.warning_groups[k].kind, full.warning_groups[k].kind);
+    EXPECT_EQ(resumed.warning_groups[k].designs, full.warning_groups[k].designs);
+    EXPECT_EQ(resumed.warning_groups[k].evaluations, full.warning_groups[k].evaluations);
+  }
+  EXPECT_EQ(resumed.best->evaluation_id, full.best->evaluation_id);
 }
 
 // A design answered entirely from the store (evaluate: the start design)

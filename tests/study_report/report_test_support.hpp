@@ -17,6 +17,7 @@
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_spec.hpp"
+#include "rackopt/study/warning_groups.hpp"
 #include "support/file_text.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/shipped_problems.hpp"
@@ -153,6 +154,38 @@ StudyResult pareto_result(const StudySpec& spec, std::size_t points, std::size_t
   r.evaluations = 200;
   r.seconds = 1.0;
   r.best_history = std::vector<double>(200, 0.3);
+  return r;
+}
+
+// An optimize study as the runner leaves it after 448 designs that each
+// warn of an undercut with their own numbers (the gantry study's case),
+// three of which also warn of a cutter tip radius; the best design is
+// evaluation 17 and has, besides its undercut, a remark of its own.
+StudyResult near_duplicate_warnings_result(const StudySpec& spec) {
+  StudyResult r;
+  r.status = study::StudyStatus::kConverged;
+  r.evaluations = 448;
+  r.best = design(spec, 0.025, 2.0, "combination 3");
+  r.best->evaluation_id = 17;
+  r.best_history = {0.5};
+  WarningTally tally;
+  std::vector<std::string> distinct;
+  for (int id = 1; id <= 448; ++id) {
+    std::vector<std::string> w = {"pinion undercut: z = " + std::to_string(10 + id % 9) + " < z_min = " +
+                                  std::to_string(17 + id % 5) + "." + std::to_string(id % 10)};
+    if (id % 100 == 0) w.push_back("cutter tip radius 0." + std::to_string(id / 100) + " mm is larger than the rack's");
+    if (id == 17) {
+      w.push_back("the best design's own remark");
+      r.best->warnings = w;
+    }
+    tally.add(w, id);
+    for (const auto& m : w)
+      if (std::find(distinct.begin(), distinct.end(), m) == distinct.end()) distinct.push_back(m);
+  }
+  r.warning_groups = tally.groups();
+  // The runner's flat list: at most 20 distinct messages and a count of the rest.
+  r.warnings.assign(distinct.begin(), distinct.begin() + 20);
+  r.warnings.push_back("... and " + std::to_string(distinct.size() - 20) + " more distinct model warnings");
   return r;
 }
 

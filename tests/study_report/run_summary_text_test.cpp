@@ -50,22 +50,48 @@ TEST(StudySummaryText, ParetoMarksTheChosenPointAndListsItsValues) {
   EXPECT_NE(text.find("  wrote o/ (summary.json)\n"), std::string::npos) << text;
 }
 
-TEST(StudySummaryText, StoppedRunSaysHowToResumeAndWarningsAreCapped) {
+TEST(StudySummaryText, StoppedRunSaysHowToResumeAndWarningKindsAreCapped) {
   const StudySpec spec = base_spec(StudyKind::kOptimize);
   StudyResult r;
   r.status = study::StudyStatus::kStopped;
   r.evaluations = 12;
   r.least_infeasible = design(spec, 0.02, 1.2, "start 0");
   StudyReport rep;
-  for (int i = 0; i < 7; ++i) rep.warnings.push_back("remark " + std::to_string(i));
+  for (const char* kind : {"a", "b", "c", "d", "e", "f", "g"}) rep.warnings.push_back(std::string("remark ") + kind);
   const std::string text = study_summary_text(spec, r, rep, "out/x");
   EXPECT_NE(text.find("study synthetic (optimize): stopped\n"), std::string::npos) << text;
   EXPECT_NE(text.find("  NO FEASIBLE DESIGN. Least infeasible design (start 0):\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("  warning: remark 4\n"), std::string::npos) << text;
-  EXPECT_EQ(text.find("remark 5"), std::string::npos) << text;
-  EXPECT_NE(text.find("  ... and 2 more warnings (summary.json, report.md)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  warnings:\n    remark a\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("    remark e\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("remark f"), std::string::npos) << text;
+  EXPECT_NE(text.find("    ... and 2 more kinds (report.md, summary.json)\n"), std::string::npos) << text;
   EXPECT_NE(text.find("  continue with: rackopt run synthetic.yaml --out out/x --resume\n"), std::string::npos)
       << text;
+}
+
+// The gantry study's case: 448 designs warn of an undercut, each with its
+// own numbers. The summary shows the best design's own warnings under their
+// own heading, then the undercut once with its count and first designs.
+TEST(StudySummaryText, NearDuplicateWarningsAreOneLineAfterTheBestDesignsOwn) {
+  const StudySpec spec = base_spec(StudyKind::kOptimize);
+  const StudyResult r = near_duplicate_warnings_result(spec);
+  StudyReport rep;
+  rep.warnings = r.warnings;
+  rep.warnings.push_back("gnuplot not found: wrote history.gp but no plot (install gnuplot-nox)");
+  const std::string text = study_summary_text(spec, r, rep, "out/x");
+  const std::size_t own = text.find("  warnings of the best design (evaluation 17):\n    pinion undercut: z = 18 < z_min = "
+                                    "19.7\n    the best design's own remark\n");
+  const std::size_t rest = text.find("  other warnings of the run, by kind:\n");
+  ASSERT_NE(own, std::string::npos) << text;
+  ASSERT_NE(rest, std::string::npos) << text;
+  EXPECT_LT(own, rest);
+  EXPECT_NE(text.find("    pinion undercut: z = … < z_min = … — 448 designs (evaluations 1, 2, 3, 4, 5, …)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("    gnuplot not found: wrote history.gp but no plot (install gnuplot-nox)\n"), std::string::npos)
+      << text;
+  EXPECT_EQ(occurrences_of(text, "pinion undercut"), 2u) << text;
+  EXPECT_EQ(occurrences_of(text, "own remark"), 1u) << text;
 }
 
 }  // namespace

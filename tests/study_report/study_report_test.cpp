@@ -475,6 +475,63 @@ TEST(StudyReport, BestDesignsOwnWarningsComeFirstUnderTheirOwnHeading) {
   EXPECT_EQ(nlohmann::json::parse(rep2.summary_json)["best"]["warnings"], nlohmann::json::array());
 }
 
+TEST(StudyReport, NearDuplicateWarningsAreOneGroupWithTheirCountAndDesigns) {
+  StudySpec spec = base_spec(StudyKind::kOptimize);
+  spec.output.plots = false;
+  const StudyResult r = near_duplicate_warnings_result(spec);
+  const std::string dir = scratch_path("warning_groups");
+  const StudyReport rep = write_study_report(spec, r, dir);
+
+  // report.md: the best design's own warnings first, under their own
+  // heading with its evaluation, then one line per kind.
+  const std::string md = read_text(dir + "/report.md");
+  const std::size_t own = md.find("## Warnings of the best design (evaluation 17)\n\n");
+  const std::size_t rest = md.find("## Other warnings of the run, by kind\n");
+  ASSERT_NE(own, std::string::npos) << md;
+  ASSERT_NE(rest, std::string::npos) << md;
+  EXPECT_LT(own, rest);
+  const std::size_t remark = md.find("- the best design's own remark\n");
+  EXPECT_TRUE(own < remark && remark < rest) << md;
+  const std::size_t undercut =
+      md.find("- **pinion undercut: z = … \\< z\\_min = …** — 448 designs (evaluations 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, …)\n"
+              "  - for example: pinion undercut: z = 11 \\< z\\_min = 18.1\n");
+  EXPECT_GT(undercut, rest) << md;
+  EXPECT_NE(md.find("- **cutter tip radius … mm is larger than the rack's** — 4 designs (evaluations 100, 200, 300, "
+                    "400)\n  - for example: cutter tip radius 0.1 mm is larger than the rack's\n"),
+            std::string::npos)
+      << md;
+  // 448 messages became: the best design's own one, and the kind with its example.
+  EXPECT_EQ(occurrences_of(md, "pinion undercut"), 3u) << md;
+  // The remark only the best design gave is not repeated among the others.
+  EXPECT_EQ(occurrences_of(md, "own remark"), 1u) << md;
+
+  // report.html is report.md rendered: the same groups.
+  const std::string html = read_text(dir + "/report.html");
+  EXPECT_NE(html.find("Other warnings of the run, by kind"), std::string::npos);
+  EXPECT_NE(html.find("448 designs (evaluations 1, 2, 3"), std::string::npos);
+  EXPECT_EQ(occurrences_of(html, "pinion undercut"), 3u);
+
+  // summary.json: the groups for programs, the flat list as before.
+  const auto j = nlohmann::json::parse(rep.summary_json);
+  EXPECT_EQ(j["best"]["evaluation"], 17);
+  ASSERT_EQ(j["warning_groups"].size(), 3u) << j["warning_groups"];
+  const auto& g = j["warning_groups"][0];
+  EXPECT_EQ(g["kind"], "pinion undercut: z = … < z_min = …");
+  EXPECT_EQ(g["example"], "pinion undercut: z = 11 < z_min = 18.1");
+  EXPECT_EQ(g["designs"], 448);
+  EXPECT_EQ(g["evaluations"].size(), kMaxListedEvaluations);
+  EXPECT_EQ(g["evaluations"][16], 17);
+  EXPECT_EQ(g["best_design"], true);
+  EXPECT_EQ(j["warning_groups"][1]["example"], "the best design's own remark");
+  EXPECT_EQ(j["warning_groups"][1]["designs"], 1);
+  EXPECT_EQ(j["warning_groups"][1]["best_design"], true);
+  EXPECT_EQ(j["warning_groups"][2]["designs"], 4);
+  EXPECT_EQ(j["warning_groups"][2]["best_design"], false);
+  EXPECT_EQ(j["warning_kinds_dropped"], 0);
+  EXPECT_EQ(j["warnings"][0], r.best->warnings[0]);
+  EXPECT_EQ(j["warnings"].size(), r.warnings.size());  // the best design's two are among the run's first 20
+}
+
 TEST(StudyReport, ReliabilityStudyWritesTheWearFiles) {
   StudySpec spec;
   spec.name = "ship lift reliability";

@@ -85,7 +85,7 @@ DesignEvaluation EvaluationLedger::rebuild(const record::RecordedEvaluation& r) 
 std::optional<Obtained> EvaluationLedger::lookup(std::span<const double> x) {
   std::optional<record::RecordedEvaluation> r = store_->find(x);
   if (!r) return std::nullopt;
-  Obtained o{rebuild(*r), Origin::kRepeat};
+  Obtained o{rebuild(*r), Origin::kRepeat, r->id};
   if (r->id <= preexisting_rows_ && counted_rows_.insert(r->id).second) o.origin = Origin::kReused;
   return o;
 }
@@ -124,9 +124,9 @@ std::vector<Obtained> EvaluationLedger::obtain_batch(const StudyProblem& p,
   }
   if (!missing.empty()) {
     std::vector<DesignEvaluation> fresh = executor_->evaluate(p, missing, threads_);
-    for (std::size_t j = 0; j < where.size(); ++j) got[where[j]] = Obtained{std::move(fresh[j]), Origin::kNew};
+    for (std::size_t j = 0; j < where.size(); ++j) got[where[j]] = Obtained{std::move(fresh[j]), Origin::kNew, 0};
   }
-  for (const auto& [k, earlier] : repeats) got[k] = Obtained{got[earlier]->design, Origin::kRepeat};
+  for (const auto& [k, earlier] : repeats) got[k] = Obtained{got[earlier]->design, Origin::kRepeat, got[earlier]->id};
   std::vector<Obtained> out;
   out.reserve(xs.size());
   for (auto& o : got) out.push_back(std::move(*o));
@@ -136,14 +136,17 @@ std::vector<Obtained> EvaluationLedger::obtain_batch(const StudyProblem& p,
 void EvaluationLedger::settle(const Obtained& o, const std::string& label, bool gradient_probe, bool ranks) {
   if (o.origin == Origin::kRepeat) return;
   const DesignEvaluation& d = o.design;
+  std::int64_t id = o.id;
   if (o.origin == Origin::kNew) {
-    append(d, label, gradient_probe);
+    id = append(d, label, gradient_probe);
   } else {
     ++result_.reused_evaluations;
   }
+  id_of_.emplace(bits_key(d.x), id);
   // New and reused alike, at the design's first use: a resumed run lists
   // the warnings in the order of an uninterrupted one.
   for (const auto& w : d.warnings) add_warning(w);
+  tally_.add(d.warnings, id);
   ++result_.evaluations;
   if (!d.evaluation.ok()) ++result_.failed_evaluations;
   track(d, label, ranks);
@@ -170,6 +173,7 @@ DesignResult EvaluationLedger::to_result(const DesignEvaluation& d, const std::s
   r.message = d.evaluation.message;
   r.warnings = d.warnings;
   r.label = label;
+  if (const auto it = id_of_.find(bits_key(d.x)); it != id_of_.end()) r.evaluation_id = it->second;
   r.objectives = own_objectives(d);
   return r;
 }
@@ -202,7 +206,7 @@ std::vector<std::string> EvaluationLedger::warnings() const {
   return w;
 }
 
-void EvaluationLedger::append(const DesignEvaluation& d, const std::string& label, bool gradient_probe) {
+std::int64_t EvaluationLedger::append(const DesignEvaluation& d, const std::string& label, bool gradient_probe) {
   record::RecordedEvaluation e;
   e.phase = label;
   e.x = d.x;
@@ -218,7 +222,7 @@ void EvaluationLedger::append(const DesignEvaluation& d, const std::string& labe
   e.seconds = std::isfinite(d.seconds) ? d.seconds : 0.0;
   e.warnings = d.warnings;
   e.models = d.models;
-  store_->append(e);
+  return store_->append(e);
 }
 
 std::vector<std::size_t> EvaluationLedger::tags_ranked() const {

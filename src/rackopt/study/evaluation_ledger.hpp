@@ -24,6 +24,7 @@
 #include "rackopt/study/study_problem.hpp"
 #include "rackopt/study/study_result.hpp"
 #include "rackopt/study/study_runner.hpp"
+#include "rackopt/study/warning_groups.hpp"
 
 namespace rackopt::study {
 
@@ -40,6 +41,7 @@ enum class Origin {
 struct Obtained {
   DesignEvaluation design;
   Origin origin = Origin::kNew;
+  std::int64_t id = 0;  // its id in the store when recorded before (kReused, kRepeat of one); 0 for kNew
 };
 
 class EvaluationLedger {
@@ -99,12 +101,15 @@ class EvaluationLedger {
   // The distinct model warnings in first-use order, at most a screenful
   // plus a line counting the rest.
   std::vector<std::string> warnings() const;
+  // Every settled design's warnings by kind (warning_groups.hpp).
+  const WarningTally& warning_tally() const { return tally_; }
 
  private:
   // The recorded evaluation turned back into what the solver saw.
   DesignEvaluation rebuild(const record::RecordedEvaluation& r) const;
   std::vector<double> own_objectives(const DesignEvaluation& d) const;
-  void append(const DesignEvaluation& d, const std::string& label, bool gradient_probe);
+  // Records d; returns its id in the store.
+  std::int64_t append(const DesignEvaluation& d, const std::string& label, bool gradient_probe);
   void add_warning(const std::string& w);
   void track(const DesignEvaluation& d, const std::string& label, bool ranks);
 
@@ -131,6 +136,10 @@ class EvaluationLedger {
   std::set<std::string> warning_set_;
   std::vector<std::string> warnings_;
   std::size_t dropped_warnings_ = 0;
+  WarningTally tally_;
+  // The store id of every design settled in this run, by bits_key: the
+  // evaluation a DesignResult names.
+  std::map<std::string, std::int64_t> id_of_;
 };
 
 }  // namespace rackopt::study

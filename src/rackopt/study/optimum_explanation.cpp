@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 namespace rackopt::study {
@@ -23,7 +24,31 @@ double scale_of(const ConstraintSpec& c, double bound) {
   return bound != 0 ? std::abs(bound) : 1.0;
 }
 
+// d objective / d u_q + sum over active constraints lambda_c A(q, c) in
+// the normalized variable u_q (the Lagrangian's gradient), as the multiplier
+// step defines A; nullopt when a needed difference failed.
+std::optional<double> lagrangian_gradient(const OptimumExplanation& e, std::size_t q, double sense, double range,
+                                          const std::vector<std::size_t>& act, const std::vector<double>& lambda) {
+  if (q >= e.objective_gradient.size() || !e.objective_gradient[q]) return std::nullopt;
+  double r = sense * *e.objective_gradient[q] * range;
+  for (std::size_t c = 0; c < act.size(); ++c) {
+    const ConstraintStatus& s = e.constraints[act[c]];
+    if (!s.gradient[q]) return std::nullopt;
+    const double dv = *s.gradient[q] * range;
+    r += lambda[c] * (s.side == "min" ? -dv : dv);
+  }
+  return r;
+}
+
 }  // namespace
+
+double bound_tolerance_fraction(const solvers::SolverSettings& solver) {
+  double f = kBoundToleranceFloor;
+  std::string library = solver.library;
+  std::transform(library.begin(), library.end(), library.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (library == "nlopt") f = std::max({f, solver.xtol_abs, solver.xtol_rel});
+  return f;
+}
 
 OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vector<double>& x, unsigned threads) {
   const StudySpec& spec = problem.spec();
@@ -41,8 +66,9 @@ OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vecto
     s.discrete = v.discrete();
     if (!s.discrete) {
       const double range = v.upper - v.lower;
-      s.at_lower = x[i] <= v.lower + 1e-6 * range;
-      s.at_upper = x[i] >= v.upper - 1e-6 * range;
+      s.bound_tolerance = bound_tolerance_fraction(spec.solver) * range;
+      s.at_lower = x[i] <= v.lower + s.bound_tolerance;
+      s.at_upper = !s.at_lower && x[i] >= v.upper - s.bound_tolerance;
       s.step = kGradientStep * range;
       const bool up = x[i] + s.step <= v.upper, down = x[i] - s.step >= v.lower;
       s.difference = up && down ? "central" : up ? "forward" : "backward";
@@ -122,6 +148,7 @@ OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vecto
       for (std::size_t q : free_cols) complete = complete && out.constraints[j].gradient[q].has_value();
     }
     for (std::size_t q : free_cols) complete = complete && out.objective_gradient[q].has_value();
+    std::vector<double> multipliers;  // of `act`, when identified
     if (!complete) {
       out.note = "some finite differences failed (a perturbed design could not be evaluated): no multipliers";
     } else if (free_cols.empty() || act.empty()) {
@@ -143,6 +170,7 @@ OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vecto
         }
       }
       const Eigen::VectorXd lambda = A.completeOrthogonalDecomposition().solve(-g);
+      multipliers.assign(lambda.data(), lambda.data() + lambda.size());
       const double gnorm = g.norm();
       out.kkt_residual = gnorm > 0 ? (g + A * lambda).norm() / gnorm : 0.0;
       for (std::size_t c = 0; c < act.size(); ++c) {
@@ -154,6 +182,18 @@ OptimumExplanation explain_optimum(const StudyProblem& problem, const std::vecto
                  " of each range; multipliers by least squares on the " + std::to_string(free_cols.size()) +
                  " free continuous variables";
       if (A.cols() > A.rows()) out.note += " (more active constraints than free variables: minimum-norm multipliers)";
+    }
+    // Which bounds hold the optimum: the Lagrangian's one-sided slope at
+    // the bound points out of the box (with no active constraint, the
+    // objective's own slope). Unknown when the multipliers are not.
+    if (act.empty() || multipliers.size() == act.size()) {
+      for (std::size_t q = 0; q < cont.size(); ++q) {
+        VariableStatus& s = out.variables[cont[q]];
+        if (!s.at_lower && !s.at_upper) continue;
+        const DesignVariable& v = spec.variables[cont[q]];
+        const std::optional<double> slope = lagrangian_gradient(out, q, sense, v.upper - v.lower, act, multipliers);
+        if (slope) s.pushed_into_bound = s.at_lower ? *slope > 0 : *slope < 0;
+      }
     }
   } else if (cont.empty()) {
     out.note = "no continuous variable: no gradients";

@@ -37,7 +37,14 @@ struct VariableStatus {
   std::string key;
   double value = 0;          // SI
   bool discrete = false;
-  bool at_lower = false, at_upper = false;  // within 1e-6 of the range (continuous only)
+  // Continuous only: within bound_tolerance of the lower / upper bound.
+  bool at_lower = false, at_upper = false;
+  double bound_tolerance = 0;  // SI: bound_tolerance_fraction(spec.solver) of the range; 0 for discrete
+  // At a bound: whether the objective's one-sided gradient, plus the active
+  // constraints' times their multipliers, pushes into that bound (the bound
+  // holds the optimum: moving off it makes the design worse); nullopt when
+  // not at a bound or a difference failed.
+  std::optional<bool> pushed_into_bound;
   double step = 0;           // finite-difference step used [SI]; 0 for discrete
   std::string difference;    // "central", "forward", "backward", or "" (discrete)
 };
@@ -56,6 +63,19 @@ struct OptimumExplanation {
 // ConstraintSpec::scale, else |bound|, else 1). Solvers stop within ~1e-4 of
 // a bound at their default tolerances.
 inline constexpr double kActiveTolerance = 1e-3;
+// A continuous variable is at a bound when it is this close to it, as a
+// fraction of its range, at least: solvers stop short of a bound by about
+// their step tolerance, and COBYLA and the population methods do not step
+// onto it at all.
+inline constexpr double kBoundToleranceFloor = 1e-3;
+
+// The at-a-bound tolerance as a fraction of a variable's range for a
+// solver (its variables are the ranges scaled to [0, 1]): NLopt stops
+// within xtol_abs + xtol_rel |u| of its point, |u| <= 1 on that box, so
+// max(kBoundToleranceFloor, xtol_abs, xtol_rel); the other libraries have
+// no step tolerance, so the floor.
+double bound_tolerance_fraction(const solvers::SolverSettings& solver);
+
 // Finite-difference step as a fraction of each continuous variable's range:
 // large enough to step over the wear lives' block-wise steps (docs/metrics.md).
 inline constexpr double kGradientStep = 1e-2;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -19,6 +20,7 @@
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/study_status.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
+#include "rackopt/study/warning_groups.hpp"
 
 namespace rackopt::study {
 
@@ -35,6 +37,7 @@ struct DesignResult {
   std::string message;                   // why it failed, or remarks
   std::vector<std::string> warnings;     // this design's own model warnings (also when taken from the store)
   std::string label;                     // "start 0", "front 3 (eps 2)", "sweep 17", "combination 2: pinion.module=25 mm"
+  std::int64_t evaluation_id = 0;        // its `id` in evaluations.csv; 0 when not recorded
 };
 
 // One discrete combination's outcome in an optimize study.
@@ -63,6 +66,8 @@ struct StudyResult {
   std::string solver_message;
   std::vector<std::string> warnings;           // model warnings, listed once, in the order the designs
                                                // were first used (the same after --resume)
+  std::vector<WarningGroup> warning_groups;    // every design's model warnings by kind, first-use order
+  std::size_t warning_kinds_dropped = 0;       // warnings of kinds beyond kMaxWarningKinds (only counted)
   double seconds = 0;                          // wall time of this run
   std::string database_path;                   // <out>/evaluations.sqlite
   std::string evaluations_csv_path;            // <out>/evaluations.csv, written by run_study from the store

@@ -85,7 +85,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
       // One evaluation, nothing of it recorded before it ends: Ctrl-C ends
       // a long one (a Monte Carlo life at R and its fit) at once.
       const ImmediateStopScope immediate;
-      if (!start) start = Obtained{base.evaluate_design(x, ledger.threads()), Origin::kNew};
+      if (!start) start = Obtained{base.evaluate_design(x, ledger.threads()), Origin::kNew, 0};
     } catch (const Interrupted&) {
       // Ctrl-C inside one long evaluation (a Monte Carlo life at R): nothing
       // of it is recorded; the study stops and --resume evaluates it again.
@@ -120,6 +120,8 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   }
   result.status = status;
   result.warnings = ledger.warnings();
+  result.warning_groups = ledger.warning_tally().groups();
+  result.warning_kinds_dropped = ledger.warning_tally().dropped();
   try {
     result.fidelity = fidelity_settings(base.drive_at(result.best ? result.best->x : base.start_design()), spec);
   } catch (const std::exception&) {

@@ -92,7 +92,7 @@ StudyStatus drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
     for (std::size_t k = 0; k < n; ++k) {
       const std::string label = "sweep " + std::to_string(begin + k);
       const std::size_t j = duplicate_of[k] != SIZE_MAX ? duplicate_of[k] : k;
-      Obtained o = got[j] ? *got[j] : Obtained{*fresh[j], Origin::kNew};
+      Obtained o = got[j] ? *got[j] : Obtained{*fresh[j], Origin::kNew, 0};
       if (j != k) o.origin = Origin::kRepeat;
       ledger.settle(o, label, false);  // ranks: progress and history show the best so far
       result.sweep_points.push_back(ledger.to_result(o.design, label));

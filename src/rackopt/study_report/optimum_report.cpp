@@ -45,6 +45,38 @@ const DesignVariable* variable_named(const StudySpec& spec, const std::string& k
   return nullptr;
 }
 
+// "Variables at a bound ...: `key` at its lower bound 17 deg, held there
+// ...", or that none is; one paragraph.
+std::string variables_at_bounds_markdown(const StudySpec& spec, const OptimumExplanation& e) {
+  std::ostringstream o;
+  bool any = false;
+  double tolerance_fraction = 0;
+  for (const VariableStatus& s : e.variables) {
+    const DesignVariable* v = variable_named(spec, s.key);
+    if (v && !s.discrete && v->upper > v->lower) tolerance_fraction = s.bound_tolerance / (v->upper - v->lower);
+    if (!s.at_lower && !s.at_upper) continue;
+    o << (any ? "; " : "Variables at a bound: ");
+    any = true;
+    const double bound = v ? (s.at_lower ? v->lower : v->upper) : s.value;
+    o << "`" << s.key << "` at its " << (s.at_lower ? "lower" : "upper") << " bound "
+      << (v ? variable_display(*v, bound) : format_number(bound, 6));
+    if (s.pushed_into_bound) {
+      o << (*s.pushed_into_bound ? ", which holds the optimum (the objective, with the active constraints, "
+                                   "would improve past it)"
+                                 : ", though the gradient points into the box (the solver stopped next to the "
+                                   "bound, which does not hold it)");
+    }
+  }
+  const std::string within = format_number(100 * tolerance_fraction, 3) + " % of its range";
+  if (any) {
+    o << ". A variable counts as at a bound when it is within " << within
+      << " from it (the solver's step tolerance, at least 0.1 %).\n\n";
+  } else {
+    o << "No continuous variable is at a bound (within " << within << ").\n\n";
+  }
+  return o.str();
+}
+
 }  // namespace
 
 std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r) {
@@ -105,14 +137,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
   o << "\nThe last column is the change of the optimal " << e.objective
     << " when the bound is tightened by 1 % (Lagrange multiplier times the change; positive = costs objective), "
        "to first order.\n\n";
-  bool any_bound = false;
-  for (const VariableStatus& v : e.variables) {
-    if (!v.at_lower && !v.at_upper) continue;
-    if (!any_bound) o << "Variables at a bound:";
-    any_bound = true;
-    o << " `" << v.key << "` (" << (v.at_lower ? "lower" : "upper") << ")";
-  }
-  o << (any_bound ? ".\n\n" : "No continuous variable is at a bound.\n\n");
+  o << variables_at_bounds_markdown(spec, e);
   if (!e.gradient_variables.empty()) {
     o << "| variable | difference | d " << e.objective << " |";
     for (const ConstraintStatus& c : e.constraints) o << " d " << c.label << " |";
@@ -203,6 +228,12 @@ void optimum_json(JsonWriter& j, const StudySpec& spec, const StudyResult& r,
     for (const VariableStatus& v : e.variables) {
       j.begin_object().key("name").value(v.key).key("value").value(v.value).key("discrete").value(v.discrete);
       j.key("at_lower").value(v.at_lower).key("at_upper").value(v.at_upper);
+      j.key("bound_tolerance").value(v.bound_tolerance).key("pushed_into_bound");
+      if (v.pushed_into_bound) {
+        j.value(*v.pushed_into_bound);
+      } else {
+        j.null();
+      }
       j.key("step").value(v.step).key("difference").value(v.difference).end_object();
     }
     j.end_array();

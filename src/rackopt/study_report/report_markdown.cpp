@@ -14,6 +14,7 @@
 #include "rackopt/study_report/front_quality_report.hpp"
 #include "rackopt/study_report/optimum_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
+#include "rackopt/study_report/warnings_report.hpp"
 
 namespace rackopt::study_report {
 
@@ -183,16 +184,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   if (fresh > 0) o << " (" << short_number(result.seconds * 1000.0 / static_cast<double>(fresh)) << " ms per new evaluation)";
   o << "\n\n";
 
-  {
-    const std::vector<std::string> listed = warnings_best_first(result, warnings);
-    const std::size_t own = result.best ? result.best->warnings.size() : 0;
-    if (own > 0) o << "## Warnings of the best design\n\n";
-    for (std::size_t i = 0; i < listed.size(); ++i) {
-      if (i == own) o << (own > 0 ? "\n## Other warnings of the run\n\n" : "## Warnings\n\n");
-      o << "- " << md_cell(listed[i]) << "\n";
-    }
-    if (!listed.empty()) o << "\n";
-  }
+  o << warnings_markdown(report_warnings(spec, result, warnings));
 
   o << "## Files\n\n";
   for (const auto& [role, path] : files.entries) {

@@ -6,6 +6,7 @@
 
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
+#include "rackopt/study_report/warnings_report.hpp"
 
 namespace rackopt::study_report {
 
@@ -90,13 +91,9 @@ std::string study_summary_text(const StudySpec& spec, const StudyResult& r, cons
   }
   o << "  evaluations: " << r.evaluations << " (" << r.failed_evaluations << " failed, " << r.reused_evaluations
     << " from the store), " << r.seconds << " s\n";
-  // Model warnings can be many near-copies (one per design): the first few
-  // here, all of them in summary.json and report.md.
-  const std::size_t shown = std::min<std::size_t>(rep.warnings.size(), 5);
-  for (std::size_t i = 0; i < shown; ++i) o << "  warning: " << rep.warnings[i] << "\n";
-  if (rep.warnings.size() > shown) {
-    o << "  ... and " << rep.warnings.size() - shown << " more warnings (summary.json, report.md)\n";
-  }
+  // Model warnings are often one near-copy per design: grouped by kind, the
+  // best design's own first; the first few kinds here, all in report.md.
+  o << warnings_text(report_warnings(spec, r, rep.warnings), 5);
   const std::string md = rep.files.get("report_md");
   const std::string html = rep.files.get("report_html");
   o << "  wrote " << out_dir << "/ (" << (md.empty() ? std::string("summary.json") : md)

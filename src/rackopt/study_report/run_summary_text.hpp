@@ -1,7 +1,8 @@
 // What `rackopt run` tells people when a study ends (stdout; stderr with
 // --json): the status, the best or chosen design with its variables and
 // metrics, the wear and FE summaries, a sweep's metric ranges, the counts,
-// the first warnings, and where the files went.
+// the warnings (the best design's own, then the first kinds of the rest:
+// warnings_report.hpp), and where the files went.
 #pragma once
 
 #include <string>

@@ -12,6 +12,7 @@
 #include "rackopt/study_report/optimum_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
 #include "rackopt/study_report/study_report.hpp"
+#include "rackopt/study_report/warnings_report.hpp"
 
 namespace rackopt::study_report {
 
@@ -25,6 +26,12 @@ void json_design(JsonWriter& j, const StudySpec& spec, const DesignResult& d, st
   j.begin_object();
   j.key("label").value(d.label);
   if (chosen) j.key("chosen").value(*chosen);
+  // Its row in evaluations.csv, which warning_groups' evaluations name.
+  if (d.evaluation_id > 0) {
+    j.key("evaluation").value(static_cast<long>(d.evaluation_id));
+  } else {
+    j.key("evaluation").null();
+  }
   j.key("variables").begin_object();
   for (std::size_t i = 0; i < spec.variables.size(); ++i) {
     const DesignVariable& v = spec.variables[i];
@@ -176,6 +183,7 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("warnings").begin_array();
   for (const auto& w : warnings_best_first(result, warnings.empty() ? result.warnings : warnings)) j.value(w);
   j.end_array();
+  warning_groups_json(j, report_warnings(spec, result, warnings.empty() ? result.warnings : warnings));
   const std::size_t fresh = fresh_evaluations(result);
   j.key("timings").begin_object();
   j.key("seconds").value(timings.run_seconds);
