@@ -14,7 +14,9 @@ WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::strin
   const fs::path dir(out_dir.empty() ? std::string(".") : out_dir);
   WrittenFiles files;
   const std::string csv = (dir / "stiffness.csv").string();
-  write_file_atomic(csv, stiffness_csv(curve));
+  write_file_atomic_from(csv, [&](const std::function<void(std::string_view)>& write) {
+    write_stiffness_csv(curve, write);
+  });
   files.written.push_back(csv);
   files.listed.emplace_back("stiffness_csv", csv);
   if (plots == PlotImages::kNone) return files;

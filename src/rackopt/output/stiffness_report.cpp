@@ -151,8 +151,16 @@ constexpr int pair_column(std::string_view name) {
 }  // namespace
 
 std::string stiffness_csv(const StiffnessCurve& c) {
+  std::string text;
+  write_stiffness_csv(c, [&](std::string_view piece) { text += piece; });
+  return text;
+}
+
+void write_stiffness_csv(const StiffnessCurve& c, const std::function<void(std::string_view piece)>& write) {
+  // Rows go into one buffer of a fixed size, handed on when it is nearly full.
+  constexpr std::size_t kPiece = 64 * 1024;
   std::string out;
-  out.reserve(c.samples.size() * (64 + 260 * static_cast<std::size_t>(c.max_pairs)));
+  out.reserve(kPiece + 64 + 260 * static_cast<std::size_t>(c.max_pairs));
   out += "travel_m,stiffness_N_per_m,rigid_body_stiffness_N_per_m,pairs_in_mesh,body_equivalent_compliance_m_per_N,"
          "transmission_error_m";
   for (int q = 0; q < c.max_pairs; ++q) {
@@ -199,8 +207,12 @@ std::string stiffness_csv(const StiffnessCurve& c) {
       num(p->relief);
     }
     out += '\n';
+    if (out.size() >= kPiece) {
+      write(out);
+      out.clear();
+    }
   }
-  return out;
+  if (!out.empty()) write(out);
 }
 
 std::string stiffness_json(const Drive& d, const MeshGeometry& g, const StiffnessCurve& c, const MeshRipple& r,
