@@ -106,7 +106,7 @@ TEST(StiffnessFiles, WritesTheTableAndScriptAndListsByRole) {
 TEST(StiffnessFiles, WithoutPlotsOnlyTheTable) {
   const StiffnessCurve curve = small_drive_curve();
   const std::string dir = scratch_dir("stiffness_no_plots");
-  const WrittenFiles f = write_stiffness_files(curve, dir, "small drive", false);
+  const WrittenFiles f = write_stiffness_files(curve, dir, "small drive", PlotImages::kNone);
   EXPECT_EQ(roles_of(f), std::vector<std::string>{"stiffness_csv"});
   EXPECT_EQ(f.written, std::vector<std::string>{dir + "/stiffness.csv"});
   EXPECT_TRUE(f.warnings.empty());
@@ -143,7 +143,7 @@ TEST(WearFiles, WithoutRandomInputsOnlyTheProfile) {
   d.reliability.inputs.clear();
   const WearReliabilityResult r = small_wear_result(d);
   const std::string dir = scratch_dir("wear_nominal");
-  const WrittenFiles f = write_wear_files(d, r, dir, "small drive", false);
+  const WrittenFiles f = write_wear_files(d, r, dir, "small drive", PlotImages::kNone);
   EXPECT_EQ(roles_of(f), std::vector<std::string>{"wear_profile_csv"});
   EXPECT_EQ(f.written, std::vector<std::string>{dir + "/wear_profile.csv"});
   EXPECT_FALSE(fs::exists(dir + "/life_samples.csv"));

@@ -83,8 +83,8 @@ TEST(PlotScripts, OneScriptDrawsThePngAndTheSameSvg) {
   const std::string dir = test_support::scratch_dir("png_and_svg");
   std::ofstream(dir + "/tiny.gp") << terminal << "plot x title 'x'\n";
   std::vector<std::string> warnings;
-  const std::string png = render_plot(dir, "tiny.gp", "tiny.png", warnings);
-  const std::string svg = render_plot_svg(dir, "tiny.gp", "tiny.svg", warnings);
+  const RenderedImages images = render_plot_images(dir, "tiny.gp", "tiny.png", "tiny.svg", warnings);
+  const std::string png = images.png, svg = images.svg;
   EXPECT_TRUE(warnings.empty()) << warnings.front();
   EXPECT_EQ(png, dir + "/tiny.png");
   EXPECT_EQ(svg, dir + "/tiny.svg");

@@ -5,11 +5,13 @@
 // cells where the documentation says so.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -254,6 +256,32 @@ TEST(LifeHistogramCsv, BinsSpanTheLivesAndCountEveryValidLife) {
     total += std::stol(row[2]);
   }
   EXPECT_EQ(total, 6);
+}
+
+// stiffness.csv is written as it is formatted: pieces of about 64 KiB, never
+// the whole table of a long curve as one string.
+TEST(StiffnessCsv, ALongCurveIsWrittenInBoundedPiecesThatMakeEveryRow) {
+  StiffnessCurve c = synthetic_curve();
+  const std::vector<MeshState> base = c.samples;
+  for (int k = 1; k <= 3000; ++k) {
+    for (MeshState s : base) {
+      s.travel += k;
+      c.samples.push_back(s);
+    }
+  }
+  std::string joined;
+  std::size_t pieces = 0, largest = 0;
+  write_stiffness_csv(c, [&](std::string_view piece) {
+    joined += piece;
+    ++pieces;
+    largest = std::max(largest, piece.size());
+  });
+  EXPECT_GT(pieces, 4u);
+  EXPECT_LT(largest, std::size_t{72 * 1024});
+  const Table t = cells(joined);
+  ASSERT_EQ(t.size(), c.samples.size() + 1);
+  for (const auto& row : t) EXPECT_EQ(row.size(), t[0].size());
+  EXPECT_NEAR(num(t.back()[0]), c.samples.back().travel, 1e-8 * c.samples.back().travel);
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // The summary curve (CurveDetail::kSummary, what the stiffness metrics ask
 // for) against the full curve: the same samples, extremes, mean and
-// breakpoints bit for bit, only without the pairs. The summary computes
-// every sample into one reused scratch state, the full curve each into a
-// fresh one, so this also checks that reusing the scratch carries nothing
-// from one sample to the next.
+// breakpoints bit for bit, only without the pairs. Both compute every
+// sample into one reused scratch state (the full curve then copies its
+// pairs out), the full one with the relief bisection's pairs of neighbouring
+// samples kept as well.
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 #include <gtest/gtest.h>

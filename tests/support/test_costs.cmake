@@ -23,3 +23,28 @@ foreach(_i RANGE 0 ${_last} 2)
   list(GET _rackopt_long_tests ${_j} _cost)
   set_tests_properties("${_name}" PROPERTIES COST ${_cost})
 endforeach()
+
+# The CalculiX solves among them carry the label long_fe: `./dev.sh test` runs
+# them after the rest, on their own (docs/fe.md, "Tests"). Their time limit is
+# their idle cost times 15 (at least ctest's 600 s): on a 2-core machine busy
+# with other builds they took 4-6 times their idle time, and a limit that does
+# not grow with the solve fails the long ones only.
+set(_rackopt_long_fe_tests
+  "RackOnSupportsFe.MeshPositionOnTheSupportsAtMidSpan"
+  "FeCli.RealSolvesOnTheGantryDriveAtLevelZero"
+  "FeShapeAndExtendedContact.ShapeOfTheLoadedMeshAndANeighbourInExtendedContact"
+  "MeshPositionFe.SmallDriveInvariantsAndTheAnalyticModel"
+  "MeshPositionFe.AMissedLoadIsCorrectedByASecondRun")
+foreach(_i RANGE 0 ${_last} 2)
+  math(EXPR _j "${_i} + 1")
+  list(GET _rackopt_long_tests ${_i} _name)
+  list(GET _rackopt_long_tests ${_j} _cost)
+  list(FIND _rackopt_long_fe_tests "${_name}" _fe)
+  if(_fe GREATER -1)
+    math(EXPR _limit "${_cost} * 15")
+    if(_limit LESS 600)
+      set(_limit 600)
+    endif()
+    set_tests_properties("${_name}" PROPERTIES LABELS long_fe TIMEOUT ${_limit})
+  endif()
+endforeach()

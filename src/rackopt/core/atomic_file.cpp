@@ -35,6 +35,10 @@ void fsync_directory_of(const std::string& path) {
 
 void write_file_atomically(const std::string& path, std::string_view content, const WrittenFileCheck& check) {
   if (content.empty()) fail(path, "refusing to write an empty file", 0);
+  write_file_atomically_from(path, [&](const std::function<void(std::string_view)>& write) { write(content); }, check);
+}
+
+void write_file_atomically_from(const std::string& path, const ContentProducer& produce, const WrittenFileCheck& check) {
   const fs::path target(path);
   const fs::path dir = target.parent_path();
   if (!dir.empty()) {
@@ -46,27 +50,43 @@ void write_file_atomically(const std::string& path, std::string_view content, co
   const int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
   if (fd < 0) fail(path, "creating a temporary file", errno);
   const TemporaryFileGuard guard(tmp);  // a second Ctrl-C unlinks it
+  bool open = true;
   auto give_up = [&](const std::string& what, int err) {
+    open = false;
     ::close(fd);
     ::unlink(tmp.c_str());
     fail(path, what, err);
   };
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      give_up("writing", errno);
+  std::size_t total = 0;
+  const auto write = [&](std::string_view piece) {
+    std::size_t done = 0;
+    while (done < piece.size()) {
+      const ssize_t n = ::write(fd, piece.data() + done, piece.size() - done);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        give_up("writing", errno);
+      }
+      if (n == 0) give_up("writing", EIO);
+      done += static_cast<std::size_t>(n);
     }
-    if (n == 0) give_up("writing", EIO);
-    done += static_cast<std::size_t>(n);
+    total += piece.size();
+  };
+  try {
+    produce(write);
+  } catch (...) {
+    if (open) {  // else give_up has closed and removed it already
+      ::close(fd);
+      ::unlink(tmp.c_str());
+    }
+    throw;
   }
+  if (total == 0) give_up("refusing to write an empty file", 0);
   // mkostemp creates 0600; an output is meant to be read like any other file.
   if (::fchmod(fd, 0644) != 0) give_up("setting permissions", errno);
   if (::fsync(fd) != 0) give_up("flushing to disk", errno);
   struct stat st{};
   if (::fstat(fd, &st) != 0) give_up("checking the written file", errno);
-  if (static_cast<std::size_t>(st.st_size) != content.size()) give_up("the written file is incomplete", EIO);
+  if (static_cast<std::size_t>(st.st_size) != total) give_up("the written file is incomplete", EIO);
   if (::close(fd) != 0) {
     const int err = errno;
     ::unlink(tmp.c_str());

@@ -28,6 +28,17 @@ using WrittenFileCheck = std::function<std::string(const std::string& temporary_
 // and `path` is left as it was.
 void write_file_atomically(const std::string& path, std::string_view content, const WrittenFileCheck& check = {});
 
+// Content produced in pieces: `produce(write)` calls write(piece) for each
+// piece, in order (a large table written as it is formatted, never held whole).
+using ContentProducer = std::function<void(const std::function<void(std::string_view piece)>& write)>;
+
+// write_file_atomically with the content from `produce`; the same guarantees
+// (the size on disk checked against the sum of the pieces, an empty content
+// refused). An exception from `produce` removes the temporary file and
+// propagates.
+void write_file_atomically_from(const std::string& path, const ContentProducer& produce,
+                                const WrittenFileCheck& check = {});
+
 // Flushes the directory that holds `path`, so that a rename into it survives
 // a power cut (best effort: some file systems refuse).
 void fsync_directory_of(const std::string& path);

@@ -30,6 +30,10 @@ void write_file_atomic(const std::string& path, const std::string& content) {
   });
 }
 
+void write_file_atomic_from(const std::string& path, const ContentProducer& produce) {
+  write_file_atomically_from(path, produce, [&](const std::string& tmp) { return check_output_file(tmp, path); });
+}
+
 std::string publish_verified(const std::string& tmp, const std::string& path) {
   const std::string why = check_output_file(tmp, path);
   if (!why.empty()) {

@@ -5,7 +5,10 @@
 // their removal by the next run that holds the folder's lock.
 #pragma once
 
+#include "rackopt/core/atomic_file.hpp"
+
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rackopt {
@@ -15,6 +18,10 @@ namespace rackopt {
 // std::runtime_error naming the path and the OS error (or what the check
 // found); `path` is then left as it was.
 void write_file_atomic(const std::string& path, const std::string& content);
+
+// The same with the content produced in pieces (write_file_atomically_from):
+// a table of a hundred thousand rows is written as it is formatted.
+void write_file_atomic_from(const std::string& path, const ContentProducer& produce);
 
 // Renames the finished temporary file `tmp` (written by another program,
 // e.g. gnuplot) to `path` after verifying it as `path`'s format and fsyncing

@@ -1,6 +1,7 @@
 #include "rackopt/output/plot.hpp"
 
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <sstream>
 
@@ -54,33 +55,45 @@ double plot_time_limit_seconds() {
 
 namespace {
 
-// render_plot and render_plot_svg: gnuplot on `script` with `arguments`
-// before it, `image` published from `image`.tmp (the name the script writes).
-std::string render(const std::string& dir_name, const std::string& script, const std::string& image,
-                   const std::vector<std::string>& arguments, std::vector<std::string>& warnings) {
+// The images of one gnuplot run: each is drawn into `<image>`.tmp by the
+// run and published on its own.
+struct Image {
+  std::string name;       // file name in the folder
+  std::string published;  // its path once published, else ""
+};
+
+// One gnuplot process on `arguments` inside `dir` (the script's log is
+// `script`.log), then each image published from `<image>`.tmp
+// (publish_verified). A warning per image not drawn.
+void render(const std::string& dir_name, const std::string& script, std::vector<Image>& images,
+            const std::vector<std::string>& arguments, std::vector<std::string>& warnings) {
   const fs::path dir(dir_name.empty() ? std::string(".") : dir_name);
-  const std::string image_path = (dir / image).string();
-  const std::string tmp_path = image_path + ".tmp";
+  const auto warn_all = [&](const std::string& why) {
+    for (const Image& image : images) warnings.push_back("plot " + (dir / image.name).string() + " not drawn: " + why);
+  };
   const char* env = std::getenv("RACKOPT_GNUPLOT");
   const std::string program = env != nullptr && *env != '\0' ? env : "gnuplot";
   const std::string exe = find_program(program);
   if (exe.empty()) {
     warnings.push_back(program + " not found: wrote " + (dir / script).string() + " but no plot (install gnuplot-nox)");
-    return "";
+    return;
   }
   if (stop_requested()) {
-    warnings.push_back("plot " + image_path + " not drawn: stopped by " + stop_reason());
-    return "";
+    warn_all("stopped by " + stop_reason());
+    return;
   }
   std::error_code ec;
-  fs::remove(tmp_path, ec);  // a stale image from a killed run must not be taken for ours
-  const TemporaryFileGuard guard(tmp_path);
+  std::deque<TemporaryFileGuard> guards;  // the guards neither move nor copy
+  for (const Image& image : images) {
+    const std::string tmp_path = (dir / image.name).string() + ".tmp";
+    fs::remove(tmp_path, ec);  // a stale image from a killed run must not be taken for ours
+    guards.emplace_back(tmp_path);
+  }
   const std::string log = script + ".log";
 
   ChildCommand command;
   command.program = exe;
   command.arguments = arguments;
-  command.arguments.push_back(script);
   command.working_dir = dir.string();
   command.stderr_file = log;
   command.time_limit_seconds = plot_time_limit_seconds();
@@ -88,8 +101,8 @@ std::string render(const std::string& dir_name, const std::string& script, const
   std::string failure;
   switch (outcome.kind) {
     case ChildOutcome::Kind::not_started:
-      warnings.push_back("plot " + image_path + " not drawn: " + outcome.message);
-      return "";
+      warn_all(outcome.message);
+      return;
     case ChildOutcome::Kind::stopped:
       failure = "stopped by " + outcome.message;
       break;
@@ -104,30 +117,51 @@ std::string render(const std::string& dir_name, const std::string& script, const
   if (failure.empty() && !outcome.ok()) {
     failure = "gnuplot failed on " + script + ": see " + (dir / log).string();
   }
-  if (failure.empty()) {
-    const std::string why = publish_verified(tmp_path, image_path);
-    if (!why.empty()) failure = "the image gnuplot wrote is not valid (" + why + ")";
+  bool all_drawn = failure.empty();
+  for (Image& image : images) {
+    const std::string image_path = (dir / image.name).string();
+    const std::string tmp_path = image_path + ".tmp";
+    std::string why = failure;
+    if (why.empty()) {
+      const std::string invalid = publish_verified(tmp_path, image_path);
+      if (!invalid.empty()) why = "the image gnuplot wrote is not valid (" + invalid + ")";
+    }
+    if (!why.empty()) {
+      fs::remove(tmp_path, ec);
+      warnings.push_back("plot " + image_path + " not drawn: " + why);
+      all_drawn = false;
+      continue;
+    }
+    image.published = image_path;
   }
-  if (!failure.empty()) {
-    fs::remove(tmp_path, ec);
-    if (fs::exists(dir / log, ec) && fs::file_size(dir / log, ec) == 0) fs::remove(dir / log, ec);  // nothing to see
-    warnings.push_back("plot " + image_path + " not drawn: " + failure);
-    return "";
-  }
-  fs::remove(dir / log, ec);
-  return image_path;
+  if (all_drawn || (fs::exists(dir / log, ec) && fs::file_size(dir / log, ec) == 0))
+    fs::remove(dir / log, ec);  // nothing to see
 }
 
 }  // namespace
 
 std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
                         std::vector<std::string>& warnings) {
-  return render(dir, script, png, {}, warnings);
+  return render_plot_images(dir, script, png, "", warnings).png;
 }
 
-std::string render_plot_svg(const std::string& dir, const std::string& script, const std::string& svg,
-                            std::vector<std::string>& warnings) {
-  return render(dir, script, svg, {"-e", "rackopt_svg=1"}, warnings);
+RenderedImages render_plot_images(const std::string& dir, const std::string& script, const std::string& png,
+                                  const std::string& svg, std::vector<std::string>& warnings) {
+  std::vector<Image> images{{png, ""}};
+  std::vector<std::string> arguments{script};
+  if (!svg.empty()) {
+    // The script a second time in the same process, as SVG: `reset` puts
+    // every setting back to gnuplot's start (the terminal and output are
+    // the script's own), so the second pass draws what a fresh process
+    // would, without a second start of gnuplot and its fonts.
+    images.push_back({svg, ""});
+    arguments.insert(arguments.end(), {"-e", "reset; rackopt_svg=1", script});
+  }
+  render(dir, script, images, arguments, warnings);
+  RenderedImages out;
+  out.png = images[0].published;
+  if (images.size() > 1) out.svg = images[1].published;
+  return out;
 }
 
 std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size) {

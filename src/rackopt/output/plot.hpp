@@ -27,17 +27,31 @@ namespace rackopt {
 std::string render_plot(const std::string& dir, const std::string& script, const std::string& png,
                         std::vector<std::string>& warnings);
 
-// The same plot as SVG: runs gnuplot on `dir`/`script` with
-// `-e "rackopt_svg=1"` (gnuplot_terminal then writes `svg`.tmp), and
-// publishes it as `dir`/`svg` like render_plot (the SVG check: "</svg>" at
-// the end). Returns the SVG's path, or "" with one warning naming it.
-std::string render_plot_svg(const std::string& dir, const std::string& script, const std::string& svg,
-                            std::vector<std::string>& warnings);
+// Which images a file set draws from each plot script it writes.
+enum class PlotImages {
+  kNone,       // the tables only: no script, no image
+  kPng,        // the script and its PNG
+  kPngAndSvg,  // the script, its PNG and its SVG, both from one gnuplot run (render_plot_images)
+};
+
+// The paths render_plot_images published; "" for an image not drawn.
+struct RenderedImages {
+  std::string png, svg;
+};
+
+// render_plot, and when `svg` is not empty the same plot as SVG from the
+// same gnuplot process: the script runs twice (the second time after
+// `reset`, with rackopt_svg defined), so a report pays for one gnuplot start
+// per plot. Each image is verified and published on its own (a PNG drawn
+// while the SVG failed is kept); one warning per image not drawn. One time
+// limit for the whole run.
+RenderedImages render_plot_images(const std::string& dir, const std::string& script, const std::string& png,
+                                  const std::string& svg, std::vector<std::string>& warnings);
 
 // The terminal and output lines every plot script starts with: a PNG of
 // `width` x `height` pixels, text `font_size` pixels high, into `png_tmp` (the name render_plot expects,
 // "<name>.png.tmp"); when gnuplot runs with rackopt_svg defined
-// (render_plot_svg), the same plot as a standalone SVG of the same size into
+// (render_plot_images' second pass), the same plot as a standalone SVG of the same size into
 // "<name>.svg.tmp". One script for both: the PNG and the SVG cannot drift
 // apart, and the script stays runnable by hand (`gnuplot x.gp`).
 std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size = 11);

@@ -5,18 +5,19 @@
 
 #include <string>
 
+#include "rackopt/output/plot.hpp"
 #include "rackopt/output/written_files.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
 namespace rackopt {
 
 // Writes stiffness.csv (role "stiffness_csv") into `out_dir` ("" is the
-// current folder; it must exist), and when `plots` the script stiffness.gp
-// and the image stiffness.png (role "stiffness_png", listed only when
-// gnuplot drew it) with `title` on top. Every file atomically
+// current folder; it must exist), and unless `plots` is kNone the script
+// stiffness.gp and the image stiffness.png (role "stiffness_png", listed only
+// when gnuplot drew it; with kPngAndSvg also stiffness.svg, in `written`) with `title` on top. Every file atomically
 // (write_file_atomic, render_plot). A plot gnuplot cannot draw is a warning
 // in the result; throws only when a file cannot be written.
 WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::string& out_dir, const std::string& title,
-                                   bool plots = true);
+                                   PlotImages plots = PlotImages::kPng);
 
 }  // namespace rackopt

@@ -1,5 +1,6 @@
 #include "rackopt/output/stiffness_report.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
@@ -151,22 +152,35 @@ constexpr int pair_column(std::string_view name) {
 }  // namespace
 
 std::string stiffness_csv(const StiffnessCurve& c) {
+  std::string text;
+  write_stiffness_csv(c, [&](std::string_view piece) { text += piece; });
+  return text;
+}
+
+void write_stiffness_csv(const StiffnessCurve& c, const std::function<void(std::string_view piece)>& write) {
+  // Rows go into one buffer of a fixed size, handed on when it is nearly full.
+  constexpr std::size_t kPiece = 64 * 1024;
   std::string out;
-  out.reserve(c.samples.size() * (64 + 260 * static_cast<std::size_t>(c.max_pairs)));
+  out.reserve(kPiece + 64 + 260 * static_cast<std::size_t>(c.max_pairs));
   out += "travel_m,stiffness_N_per_m,rigid_body_stiffness_N_per_m,pairs_in_mesh,body_equivalent_compliance_m_per_N,"
          "transmission_error_m";
   for (int q = 0; q < c.max_pairs; ++q) {
     for (const char* col : kPairColumns) out += ",pair" + std::to_string(q) + "_" + col;
   }
   out += '\n';
+  // %.9g through std::to_chars (the same digits, specified so): printf's
+  // digit generation was two thirds of writing a long curve's table.
   char buf[64];
+  auto g9 = [&](double v) {
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 9);
+    out.append(buf, r.ptr);
+  };
   auto num = [&](double v) {
-    std::snprintf(buf, sizeof buf, ",%.9g", v);
-    out += buf;
+    out += ',';
+    g9(v);
   };
   for (const MeshState& s : c.samples) {
-    std::snprintf(buf, sizeof buf, "%.9g", s.travel);
-    out += buf;
+    g9(s.travel);
     num(s.stiffness);
     num(s.local_stiffness);
     out += "," + std::to_string(s.pairs.size());
@@ -199,8 +213,12 @@ std::string stiffness_csv(const StiffnessCurve& c) {
       num(p->relief);
     }
     out += '\n';
+    if (out.size() >= kPiece) {
+      write(out);
+      out.clear();
+    }
   }
-  return out;
+  if (!out.empty()) write(out);
 }
 
 std::string stiffness_json(const Drive& d, const MeshGeometry& g, const StiffnessCurve& c, const MeshRipple& r,

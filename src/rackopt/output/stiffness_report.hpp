@@ -3,7 +3,9 @@
 // the gnuplot script for the plot.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/stiffness/mesh_ripple.hpp"
@@ -33,6 +35,11 @@ std::string mesh_dynamics_summary(const MeshRipple& ripple, const TransmissionEr
 // One row per sample; per-pair columns repeated for slots 0..max_pairs-1.
 // SI units throughout (m, N/m, m/N).
 std::string stiffness_csv(const StiffnessCurve& curve);
+
+// The same text in pieces of about 64 KiB, each passed to `write` in order:
+// what stiffness.csv is written from, so a curve of 150 000 samples is never
+// held as one string of 60 MB beside the curve.
+void write_stiffness_csv(const StiffnessCurve& curve, const std::function<void(std::string_view piece)>& write);
 
 struct Timings {
   double model_ms = 0;  // geometry + tooth models

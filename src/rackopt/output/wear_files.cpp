@@ -8,7 +8,7 @@
 namespace rackopt {
 
 WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r, const std::string& out_dir,
-                              const std::string& title, bool plots) {
+                              const std::string& title, PlotImages plots) {
   namespace fs = std::filesystem;
   const fs::path dir(out_dir.empty() ? std::string(".") : out_dir);
   WrittenFiles files;
@@ -20,15 +20,18 @@ WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r
   };
   auto plot = [&](const std::string& role, const std::string& script_name, const std::string& script,
                   const std::string& png_name) {
-    if (!plots) return;
+    if (plots == PlotImages::kNone) return;
     const std::string script_path = (dir / script_name).string();
     write_file_atomic(script_path, script);
     files.written.push_back(script_path);
-    const std::string png = render_plot(dir.string(), script_name, png_name, files.warnings);
-    if (!png.empty()) {
-      files.written.push_back(png);
-      files.listed.emplace_back(role, png);
+    const std::string svg_name =
+        plots == PlotImages::kPngAndSvg ? fs::path(png_name).replace_extension(".svg").string() : std::string();
+    const RenderedImages images = render_plot_images(dir.string(), script_name, png_name, svg_name, files.warnings);
+    if (!images.png.empty()) {
+      files.written.push_back(images.png);
+      files.listed.emplace_back(role, images.png);
     }
+    if (!images.svg.empty()) files.written.push_back(images.svg);
   };
   table("wear_profile_csv", "wear_profile.csv", wear_profile_csv(r.nominal));
   plot("wear_profile_png", "wear_profile.gp", wear_profile_gnuplot(title), "wear_profile.png");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rackopt/wear_reliability/wear_reliability.hpp"
+#include "rackopt/output/plot.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/output/written_files.hpp"
 
@@ -20,11 +21,12 @@ namespace rackopt {
 // "wear_profile_csv", "wear_profile_png", and when r.lives is not empty
 // "life_samples_csv", "reliability_csv", "life_histogram_csv",
 // "life_histogram_png", "reliability_png"; the PNGs (and their *.gp
-// scripts) only when `plots`, each listed only when gnuplot drew it. `title`
+// scripts) unless `plots` is kNone, each listed only when gnuplot drew it;
+// with kPngAndSvg each plot's SVG too (in `written`, not listed). `title`
 // heads every plot. Every file atomically; a plot gnuplot cannot draw is a
 // warning in the result; throws only when a file cannot be written.
 WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r, const std::string& out_dir,
-                              const std::string& title, bool plots = true);
+                              const std::string& title, PlotImages plots = PlotImages::kPng);
 
 // The paths wear_json names, looked up by the roles above in `listed`
 // ((role, path) pairs; "" for a role not there).

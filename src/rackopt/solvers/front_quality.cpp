@@ -1,13 +1,12 @@
 #include "rackopt/solvers/front_quality.hpp"
 
-#include <pagmo/utils/hypervolume.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
+#include "rackopt/solvers/pagmo_library.hpp"
 #include "rackopt/solvers/pareto.hpp"
 
 namespace rackopt::solvers {
@@ -66,9 +65,9 @@ double hypervolume(const ObjectiveVectors& points, std::span<const double> refer
     for (const auto& p : inside) best = std::min(best, p[0]);
     return reference[0] - best;
   }
-  // pagmo wants at least 2 objectives and points that dominate the reference.
-  const pagmo::hypervolume hv(inside, true);
-  return hv.compute(pagmo::vector_double(reference.begin(), reference.end()));
+  // pagmo (through its module, opened here the first time) wants at least 2
+  // objectives and points that dominate the reference.
+  return pagmo_api().hypervolume(inside, std::vector<double>(reference.begin(), reference.end()));
 }
 
 double spacing(const ObjectiveVectors& front) {

@@ -32,16 +32,9 @@
 //  * GACO keeps at most `ker` solutions and needs a population of at least
 //    that many;
 //  * pagmo reseeds nothing by itself: every seed comes from SolverSettings::seed.
-#include <pagmo/algorithm.hpp>
-#include <pagmo/algorithms/cmaes.hpp>
-#include <pagmo/algorithms/gaco.hpp>
-#include <pagmo/algorithms/moead.hpp>
-#include <pagmo/algorithms/nsga2.hpp>
-#include <pagmo/algorithms/sade.hpp>
-#include <pagmo/bfe.hpp>
-#include <pagmo/population.hpp>
-#include <pagmo/problem.hpp>
-
+//
+// pagmo itself is called through librackopt_pagmo.so (pagmo_module.hpp),
+// opened at the first run.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -53,6 +46,7 @@
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/solvers/adapters.hpp"
 #include "rackopt/solvers/front_selection.hpp"
+#include "rackopt/solvers/pagmo_library.hpp"
 
 namespace rackopt::solvers::detail {
 
@@ -62,55 +56,36 @@ constexpr double kInfeasibleBase = 1.0e6;
 constexpr double kMaxViolationShown = 1.0e6;  // keeps base + violation exact enough to order
 constexpr double kFailedValue = kInfeasibleBase * (2.0 + kMaxViolationShown);
 
-// The problem as pagmo sees it: penalized objectives (see the file comment).
-// Copies share the tracker: pagmo copies its problem into every population.
-struct PenalizedProblem {
-  EvaluationTracker* tracker = nullptr;
-  std::size_t objectives = 1;
-  std::size_t integers = 0;  // the last ones are whole-valued (pagmo's nix)
-  double tolerance = 0;
+// The objectives pagmo sees for an evaluation (see the file comment).
+std::vector<double> penalized(const Evaluation& e, std::size_t objectives, double tolerance) {
+  if (!e.ok()) return std::vector<double>(objectives, kFailedValue);
+  const double v = max_violation(e);
+  if (v > tolerance) return std::vector<double>(objectives, kInfeasibleBase + std::min(v, kMaxViolationShown));
+  return std::vector<double>(e.objectives.begin(), e.objectives.end());
+}
 
-  pagmo::vector_double fitness(const pagmo::vector_double& x) const { return penalized(tracker->at(x.data())); }
-  // Many designs at once (the tracker hands them to Problem::evaluate_batch),
-  // fitness vectors in the order of `xs`.
-  std::vector<pagmo::vector_double> batch_fitness(const std::vector<std::vector<double>>& xs) const {
-    std::vector<pagmo::vector_double> out;
-    for (const Evaluation& e : tracker->at_batch(xs)) out.push_back(penalized(e));
+// The penalized problem on a tracker: one design, or many at once (the
+// tracker hands them to Problem::evaluate_batch), fitness vectors in the
+// order of `xs`.
+pagmo_module::ProblemSettings penalized_problem(EvaluationTracker& tracker, std::size_t objectives,
+                                                std::size_t integers, double tolerance) {
+  pagmo_module::ProblemSettings p;
+  p.objectives = objectives;
+  p.integers = integers;
+  p.lower = tracker.lower();
+  p.upper = tracker.upper();
+  p.fitness = [&tracker, objectives, tolerance](const std::vector<double>& x) {
+    return penalized(tracker.at(x.data()), objectives, tolerance);
+  };
+  p.batch_fitness = [&tracker, objectives, tolerance](const std::vector<std::vector<double>>& xs) {
+    std::vector<std::vector<double>> out;
+    for (const Evaluation& e : tracker.at_batch(xs)) out.push_back(penalized(e, objectives, tolerance));
     return out;
-  }
-  pagmo::vector_double penalized(const Evaluation& e) const {
-    if (!e.ok()) return pagmo::vector_double(objectives, kFailedValue);
-    const double v = max_violation(e);
-    if (v > tolerance) return pagmo::vector_double(objectives, kInfeasibleBase + std::min(v, kMaxViolationShown));
-    return pagmo::vector_double(e.objectives.begin(), e.objectives.end());
-  }
-  std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
-    return {tracker->lower(), tracker->upper()};
-  }
-  pagmo::vector_double::size_type get_nobj() const { return objectives; }
-  pagmo::vector_double::size_type get_nix() const { return integers; }
-  std::string get_name() const { return "rackopt penalized problem"; }
-};
+  };
+  return p;
+}
 
-// pagmo's batch fitness evaluator for NSGA-II: a generation's offspring go
-// to the tracker as one batch (flattened decision vectors in, flattened
-// fitness vectors out, as pagmo's bfe contract says).
-struct TrackerBatchEvaluator {
-  pagmo::vector_double operator()(const pagmo::problem& p, const pagmo::vector_double& dvs) const {
-    const PenalizedProblem* udp = p.extract<PenalizedProblem>();
-    if (!udp) throw std::logic_error("the pagmo batch evaluator serves the penalized rackopt problem only");
-    const std::size_t n = p.get_nx();
-    std::vector<std::vector<double>> xs;
-    for (std::size_t k = 0; k + n <= dvs.size(); k += n)
-      xs.emplace_back(dvs.begin() + static_cast<std::ptrdiff_t>(k), dvs.begin() + static_cast<std::ptrdiff_t>(k + n));
-    pagmo::vector_double out;
-    for (const auto& f : udp->batch_fitness(xs)) out.insert(out.end(), f.begin(), f.end());
-    return out;
-  }
-  std::string get_name() const { return "rackopt evaluation tracker"; }
-};
-
-enum class Method { kNsga2, kMoead, kCmaes, kSade, kGaco };
+using pagmo_module::Method;
 
 struct MethodInfo {
   Method method;
@@ -183,39 +158,19 @@ std::size_t population_size(const SolverBackend& backend, const SolverSettings& 
   return p;
 }
 
-pagmo::algorithm make_algorithm(const SolverBackend& backend, const SolverSettings& settings, const MethodInfo& m,
-                                std::size_t dimension, std::size_t population) {
-  const auto seed = static_cast<unsigned>(settings.seed ^ (settings.seed >> 32));
+pagmo_module::AlgorithmSettings algorithm_settings(const SolverBackend& backend, const SolverSettings& settings,
+                                                   const MethodInfo& m, std::size_t dimension, std::size_t population) {
+  pagmo_module::AlgorithmSettings a;
+  a.method = m.method;
+  a.seed = static_cast<unsigned>(settings.seed ^ (settings.seed >> 32));
+  a.crossover_probability = backend.option(settings, "crossover_probability");
   const double mutation = backend.option(settings, "mutation_probability");
-  const double pm = mutation > 0 ? mutation : 1.0 / static_cast<double>(std::max<std::size_t>(1, dimension));
-  switch (m.method) {
-    case Method::kNsga2: {
-      pagmo::nsga2 nsga2(1u, backend.option(settings, "crossover_probability"), 10.0, pm, 20.0, seed);
-      nsga2.set_bfe(pagmo::bfe(TrackerBatchEvaluator{}));
-      return pagmo::algorithm(nsga2);
-    }
-    case Method::kMoead: {
-      const auto neighbours = static_cast<pagmo::population::size_type>(
-          std::min<double>(backend.option(settings, "neighbours"), static_cast<double>(population - 1)));
-      return pagmo::algorithm(pagmo::moead(1u, "low discrepancy", "tchebycheff", neighbours, 1.0, 0.5, 20.0, 0.9, 2u,
-                                           true, seed));
-    }
-    case Method::kCmaes:
-      return pagmo::algorithm(
-          pagmo::cmaes(1u, -1, -1, -1, -1, backend.option(settings, "sigma0"), 0, 0, true, true, seed));
-    case Method::kSade: return pagmo::algorithm(pagmo::sade(1u, 2u, 1u, 0, 0, true, seed));
-    case Method::kGaco: {
-      // pagmo's threshold of 1: the greedy q = 0.01 from the first
-      // generation (q = 1 until a threshold of half the budget's generations
-      // ended on a worse optimum of the shipped gantry sizing study, and
-      // made the search depend on the budget).
-      const auto kernel = static_cast<unsigned>(std::min(kGacoKernel, population));
-      pagmo::gaco gaco(1u, kernel, 1.0, 0.0, 0.01, 1u, 7u, 100000u, 100000u, 0.0, true, seed);
-      gaco.set_bfe(pagmo::bfe(TrackerBatchEvaluator{}));
-      return pagmo::algorithm(gaco);
-    }
-  }
-  throw std::logic_error("unknown pagmo method");
+  a.mutation_probability = mutation > 0 ? mutation : 1.0 / static_cast<double>(std::max<std::size_t>(1, dimension));
+  a.neighbours = static_cast<unsigned>(
+      std::min<double>(backend.option(settings, "neighbours"), static_cast<double>(population - 1)));
+  a.sigma0 = backend.option(settings, "sigma0");
+  a.kernel = static_cast<unsigned>(std::min(kGacoKernel, population));
+  return a;
 }
 
 // A point's whole-valued variables rounded to the nearest whole value (the
@@ -238,10 +193,11 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
               std::size_t integers, std::size_t population,
               const std::function<void(std::size_t)>& on_generation) {
   const SolverBackend& backend = pagmo_backend();
-  PenalizedProblem udp{&tracker, objectives, integers, settings.constraint_tolerance};
-  pagmo::problem prob(udp);
+  const pagmo_module::ProblemSettings udp =
+      penalized_problem(tracker, objectives, integers, settings.constraint_tolerance);
   const auto pop_seed = static_cast<unsigned>(settings.seed * 2654435761u + 17u);
-  pagmo::population pop(prob, 0u, pop_seed);
+  const std::unique_ptr<pagmo_module::Evolution> evolution =
+      pagmo_api().start(udp, algorithm_settings(backend, settings, m, tracker.dimension(), population), pop_seed);
   RunEnd end;
   tracker.begin_start(0);
   on_generation(0);
@@ -257,18 +213,17 @@ RunEnd evolve(EvaluationTracker& tracker, const SolverSettings& settings, const 
   // evaluation kept by the tracker; anything else is rethrown by the caller.
   tracker.guard([&] {
     // The first population as one batch.
-    const std::vector<pagmo::vector_double> first_f = udp.batch_fitness(first);
-    for (std::size_t k = 0; k < first.size(); ++k) pop.push_back(first[k], first_f[k]);
-    pagmo::algorithm algo = make_algorithm(backend, settings, m, tracker.dimension(), population);
+    const std::vector<std::vector<double>> first_f = udp.batch_fitness(first);
+    for (std::size_t k = 0; k < first.size(); ++k) evolution->add(first[k], first_f[k]);
     const auto stall = static_cast<std::size_t>(backend.option(settings, "stall_generations"));
     double best = std::numeric_limits<double>::infinity();
     std::size_t since_better = 0;
     while (tracker.evaluations_so_far() + population <= settings.max_evaluations) {
       on_generation(end.generations + 1);
-      pop = algo.evolve(pop);
+      evolution->evolve_generation();
       ++end.generations;
       if (objectives == 1 && stall > 0) {
-        const double f = pop.champion_f()[0];
+        const double f = evolution->champion_objective();
         const double scale = settings.ftol_rel * std::abs(best) + settings.ftol_abs;
         if (f < best - scale || !std::isfinite(best)) {
           best = f;

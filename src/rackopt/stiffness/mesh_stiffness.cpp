@@ -913,17 +913,16 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail, int positions_per_p
   // The same hints in both details, so that they keep the same values.
   LoadShareHint sweep;
   for (const Probe& pr : probes) {
-    if (keep_pairs) {
-      out.samples.push_back(im.state(pr.X, pr.side, parts, &sweep));
-    } else {
-      // Computed in the sample itself with the scratch's pairs lent to it
-      // and taken back: copying the sample's values out of the scratch
-      // stalled on loads of what the solve had just stored.
-      MeshState& sample = out.samples.emplace_back();
-      sample.pairs.swap(scratch.pairs);
-      im.state_into(sample, pr.X, pr.side, parts, &sweep);
-      sample.pairs.swap(scratch.pairs);
-    }
+    // Computed in the sample itself with the scratch's pairs lent to it
+    // and taken back: copying the sample's values out of the scratch
+    // stalled on loads of what the solve had just stored.
+    MeshState& sample = out.samples.emplace_back();
+    sample.pairs.swap(scratch.pairs);
+    im.state_into(sample, pr.X, pr.side, parts, &sweep);
+    sample.pairs.swap(scratch.pairs);
+    // A kept sample's pairs in storage of their own size: room for the most
+    // pairs in mesh plus one in every sample tripled a long curve's memory.
+    if (keep_pairs) sample.pairs.assign(scratch.pairs.begin(), scratch.pairs.end());
   }
 
   if (im.relief) {

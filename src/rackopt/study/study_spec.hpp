@@ -107,7 +107,8 @@ struct OutputSpec {
   bool plots = true;        // PNGs with gnuplot (skipped with a warning when gnuplot is missing)
   bool report = true;       // report.md linking tables and plots
   // Designs whose stiffness curve is written and plotted: the best design
-  // (optimize/evaluate), the chosen front point (pareto).
+  // (optimize/evaluate), the chosen front point (pareto). The study loader's
+  // default: on when one of the study's metrics reads the stiffness curve.
   bool stiffness_curve = true;
 };
 

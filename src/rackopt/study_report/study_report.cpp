@@ -1,5 +1,6 @@
 #include "rackopt/study_report/study_report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -41,6 +42,12 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   // Plots and the stiffness curve warn after the run's warnings, whatever
   // order the files are written in.
   std::vector<std::string> plot_warnings;
+  // report.html shows each plot as SVG, drawn with its PNG by the same
+  // gnuplot run from the same script; the SVG stays next to the PNG for
+  // documents that want vector figures.
+  const PlotImages images = !spec.output.plots   ? PlotImages::kNone
+                            : spec.output.report ? PlotImages::kPngAndSvg
+                                                 : PlotImages::kPng;
 
   auto write = [&](const std::string& name, const std::string& content) {
     const std::string path = (dir / name).string();
@@ -52,11 +59,14 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
                   const std::string& png) {
     if (!spec.output.plots) return;
     write(script_name, script);
-    const std::string p = render_plot(dir.string(), script_name, png, plot_warnings);
-    if (!p.empty()) {
-      rep.files.add(role, p);
-      rep.written.push_back(p);
+    const std::string svg =
+        images == PlotImages::kPngAndSvg ? fs::path(png).replace_extension(".svg").string() : std::string();
+    const RenderedImages drawn = render_plot_images(dir.string(), script_name, png, svg, plot_warnings);
+    if (!drawn.png.empty()) {
+      rep.files.add(role, drawn.png);
+      rep.written.push_back(drawn.png);
     }
+    if (!drawn.svg.empty()) rep.written.push_back(drawn.svg);
   };
   auto take = [&](const WrittenFiles& files) {
     for (const auto& [role, path] : files.listed) rep.files.add(role, path);
@@ -80,7 +90,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
     if (result.best_curve) {
       const std::string which = spec.kind == StudyKind::kPareto ? "chosen design" : "best design";
       take(write_stiffness_files(*result.best_curve, dir.string(), title + ": stiffness of the " + which,
-                                 spec.output.plots));
+                                 images));
     } else if (!result.best_curve_error.empty()) {
       plot_warnings.push_back(result.best_curve_error);
     }
@@ -88,7 +98,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
 
   // reliability: the files of `rackopt wear` for the study's design.
   if (result.reliability && result.best_drive) {
-    take(write_wear_files(*result.best_drive, *result.reliability, dir.string(), title, spec.output.plots));
+    take(write_wear_files(*result.best_drive, *result.reliability, dir.string(), title, images));
   }
 
   write_fe_verification_files(spec, result, rep.files, write, plot);
@@ -115,20 +125,15 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   if (!result.database_path.empty() && fs::exists(result.database_path)) {
     rep.files.add("database", result.database_path);
   }
-  // report.html shows each plot as SVG, drawn by the PNG's own script; the
-  // SVG stays next to the PNG for documents that want vector figures.
+  // The SVG each listed PNG's gnuplot run drew beside it, inlined in report.html.
   std::map<std::string, std::string> svg_by_target;
   if (spec.output.report) {
     std::size_t plots = 0;
     for (const auto& entry : rep.files.entries) {
       const fs::path png(entry.second);
-      const fs::path script = fs::path(png).replace_extension(".gp");
-      if (png.extension() != ".png" || !fs::exists(script)) continue;
-      const std::string svg = render_plot_svg(png.parent_path().string(), script.filename().string(),
-                                              fs::path(png.filename()).replace_extension(".svg").string(),
-                                              plot_warnings);
-      if (svg.empty()) continue;
-      rep.written.push_back(svg);
+      if (png.extension() != ".png") continue;
+      const std::string svg = fs::path(png).replace_extension(".svg").string();
+      if (std::find(rep.written.begin(), rep.written.end(), svg) == rep.written.end()) continue;
       std::ifstream in(svg, std::ios::binary);
       std::ostringstream text;
       text << in.rdbuf();

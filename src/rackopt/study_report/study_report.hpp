@@ -53,9 +53,10 @@ struct StudyReport {
 };
 
 // Writes the report of `result` into `out_dir` (created if missing); every
-// file atomically (write_file_atomic; PNGs and SVGs through render_plot and
-// render_plot_svg). Which files depends on the kind (docs/output.md); plots
-// only when spec.output.plots, report.md, report.html and the SVGs only when
+// file atomically (write_file_atomic; each plot's PNG and, with the report,
+// its SVG from one gnuplot run: render_plot_images). Which files depends on
+// the kind (docs/output.md); plots only when spec.output.plots, report.md,
+// report.html and the SVGs only when
 // spec.output.report, the stiffness curve only when
 // spec.output.stiffness_curve and the runner computed result.best_curve
 // (study/best_design_curve.hpp): the report runs no model. A plot gnuplot

@@ -166,12 +166,22 @@ SectionReader read_sweep(const SectionReader& top, StudySpec& spec) {
   return sw;
 }
 
+// Whether a metric of the study reads the stiffness curve: then its best
+// design's curve is worth drawing by default. A study of wear lives or
+// stresses alone leaves the curve (about 1.5 s of a small study with its
+// plot) to `output.stiffness_curve: on`.
+bool reads_stiffness_curve(const StudySpec& spec) {
+  for (const metrics::MetricRequest& r : spec.all_metrics())
+    if (metrics::find_metric(r.name).models.contains(metrics::Model::kStiffnessCurve)) return true;
+  return false;
+}
+
 void read_output_and_limits(const SectionReader& top, StudySpec& spec) {
   const SectionReader out = study_section(top.get("output"), "output", top.key_mark("output"),
                                           {"plots", "report", "stiffness_curve"}, "{plots: on, report: on}");
   spec.output.plots = out.flag("plots", true);
   spec.output.report = out.flag("report", true);
-  spec.output.stiffness_curve = out.flag("stiffness_curve", true);
+  spec.output.stiffness_curve = out.flag("stiffness_curve", reads_stiffness_curve(spec));
   const SectionReader lim = study_section(top.get("limits"), "limits", top.key_mark("limits"),
                                           {"max_discrete_combinations"}, "{max_discrete_combinations: 256}");
   spec.max_discrete_combinations =
