@@ -45,6 +45,8 @@ void EvaluationLedger::open_store(const std::string& path) {
   store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume,
                                                store_options));
   preexisting_rows_ = static_cast<std::int64_t>(store_->size());
+  result_.damaged_records = store_->damaged_rows_removed();
+  result_.unchecked_records = store_->unchecked_rows();
   store_->set_meta("status", "running");
   store_->set_meta("kind", kind_name(spec_.kind));
   store_->set_meta("study", spec_.name);

@@ -6,6 +6,7 @@
 
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
+#include "rackopt/study_report/result_facts.hpp"
 
 namespace rackopt::study_report {
 
@@ -90,6 +91,7 @@ std::string study_summary_text(const StudySpec& spec, const StudyResult& r, cons
   }
   o << "  evaluations: " << r.evaluations << " (" << r.failed_evaluations << " failed, " << r.reused_evaluations
     << " from the store), " << r.seconds << " s\n";
+  for (const std::string& note : recorded_rows_notes(r)) o << "  " << note << "\n";
   // Model warnings can be many near-copies (one per design): the first few
   // here, all of them in summary.json and report.md.
   const std::size_t shown = std::min<std::size_t>(rep.warnings.size(), 5);
