@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -254,12 +255,13 @@ std::string version_text(bool json) {
 // "--json", `-o=DIR` as the folder "=DIR" and `--out ""` as the working
 // directory, so argv is checked before it parses. A negative number ("-1")
 // is left to the option's own range check.
-void check_option_value(const std::string& option, const std::string& value, const std::string& command) {
+void check_option_value(const std::string& option, const std::string& long_name, const std::string& value,
+                        const std::string& command) {
   if (value.empty()) throw UsageError(option + " needs a value, got an empty one", command);
   const bool number = value.size() > 1 && (std::isdigit(static_cast<unsigned char>(value[1])) || value[1] == '.');
   if (value[0] == '-' && value.size() > 1 && !number) {
     throw UsageError(option + " needs a value, got the option " + value +
-                         " (a value that starts with '-' is written " + option + "=./" + value + ")",
+                         " (a value that starts with '-' is written " + long_name + "=./" + value + ")",
                      command);
   }
 }
@@ -267,13 +269,15 @@ void check_option_value(const std::string& option, const std::string& value, con
 // Every value option's value in argv (before "--"), by check_option_value;
 // a short option joined to its value by '=' (`-o=DIR`) is refused too.
 void refuse_missing_values(CLI::App& app, int argc, char** argv) {
-  std::set<std::string> commands, short_names, long_names;
+  std::set<std::string> commands;
+  std::map<std::string, std::string> long_of;  // "-o" and "--out" -> "--out"
   for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) {
     commands.insert(c->get_name());
     for (const CLI::Option* o : c->get_options()) {
-      if (!o->nonpositional() || o->get_type_size() == 0) continue;  // FILE, flags
-      for (const std::string& n : o->get_snames()) short_names.insert("-" + n);
-      for (const std::string& n : o->get_lnames()) long_names.insert("--" + n);
+      if (!o->nonpositional() || o->get_expected_max() == 0) continue;  // FILE, flags
+      const std::string long_name = "--" + o->get_lnames().front();
+      for (const std::string& n : o->get_snames()) long_of["-" + n] = long_name;
+      for (const std::string& n : o->get_lnames()) long_of["--" + n] = long_name;
     }
   }
   std::string command;
@@ -282,11 +286,11 @@ void refuse_missing_values(CLI::App& app, int argc, char** argv) {
     if (a == "--") break;
     if (command.empty() && commands.count(a) > 0) command = a;
     const std::size_t eq = a.find('=');
-    if (a.rfind("--", 0) == 0 && eq != std::string::npos && long_names.count(a.substr(0, eq)) > 0) {
-      check_option_value(a.substr(0, eq), a.substr(eq + 1), command);
-    } else if (long_names.count(a) > 0 || short_names.count(a) > 0) {
-      if (i + 1 < argc) check_option_value(a, argv[++i], command);  // else CLI11: "needs a value"
-    } else if (a.size() > 2 && a[1] != '-' && short_names.count(a.substr(0, 2)) > 0) {
+    if (a.rfind("--", 0) == 0 && eq != std::string::npos && long_of.count(a.substr(0, eq)) > 0) {
+      check_option_value(a.substr(0, eq), long_of[a.substr(0, eq)], a.substr(eq + 1), command);
+    } else if (long_of.count(a) > 0) {
+      if (i + 1 < argc) check_option_value(a, long_of[a], argv[++i], command);  // else CLI11: "needs a value"
+    } else if (a.size() > 2 && a[0] == '-' && a[1] != '-' && long_of.count(a.substr(0, 2)) > 0) {
       if (a[2] == '=') {
         throw UsageError(a.substr(0, 2) + " takes its value after a space (" + a.substr(0, 2) + " " + a.substr(3) +
                              "), not after '='; got " + a,
@@ -394,7 +398,12 @@ CommandLine parse_command_line(int argc, char** argv) {
   } catch (const UsageError& e) {  // a bad value (add_whole): it knows no command
     throw UsageError(e.what(), selected_command(*app));
   }
-  const std::vector<std::string> before = app->remaining();
+  // CLI11 leaves the "--" itself among the arguments it did not take.
+  auto without_dashes = [](std::vector<std::string> args) {
+    args.erase(std::remove(args.begin(), args.end(), std::string("--")), args.end());
+    return args;
+  };
+  const std::vector<std::string> before = without_dashes(app->remaining());
   const std::vector<CLI::App*> chosen = app->get_subcommands();
   if (chosen.empty()) {
     if (before.empty()) throw UsageError("no command given");
@@ -405,16 +414,19 @@ CommandLine parse_command_line(int argc, char** argv) {
   }
   CLI::App& cmd = *chosen.front();
   line.args.command = cmd.get_name();
+  // Whether `arg` came after a "--" (a file name, whatever it looks like).
+  auto after_dashes = [&](const std::string& arg) {
+    const char* const* begin = argv + 1;
+    const char* const* end = argv + argc;
+    const char* const* dashes = std::find_if(begin, end, [](const char* a) { return std::string(a) == "--"; });
+    return std::find_if(dashes, end, [&](const char* a) { return arg == a; }) != end;
+  };
+  if (!before.empty() && after_dashes(before.front())) refuse_extra(*app, cmd, before.front(), true);
   if (!before.empty()) {
     throw UsageError("option " + before.front() + " before the command; options go after it", cmd.get_name());
   }
-  const std::vector<std::string> extra = cmd.remaining();
-  if (!extra.empty()) {
-    const char* const* end = argv + argc;
-    const char* const* dashes = std::find_if(argv + 1, end, [](const char* s) { return std::string(s) == "--"; });
-    const bool after_dashes = std::find_if(dashes, end, [&](const char* s) { return extra.front() == s; }) != end;
-    refuse_extra(*app, cmd, extra.front(), after_dashes);
-  }
+  const std::vector<std::string> extra = without_dashes(cmd.remaining());
+  if (!extra.empty()) refuse_extra(*app, cmd, extra.front(), after_dashes(extra.front()));
   if (line.args.command == "version") {
     line.text = version_text(line.args.json);
     line.args.command.clear();

@@ -356,9 +356,9 @@ void flip_a_bit_of_row(const std::string& db_path, int id) {
   std::string blob(p, static_cast<std::size_t>(sqlite3_column_bytes(read, 0)));
   sqlite3_finalize(read);
   ASSERT_GE(blob.size(), 8u);
-  // The second bit of the exponent: a positive objective near 1 becomes
-  // about 1e-154, the best of any sweep if it were believed.
-  blob[7] = static_cast<char>(blob[7] ^ 0x20);
+  // The top bit of the exponent: a positive objective of a few units
+  // becomes about 1e-308, the best of the sweep if it were believed.
+  blob[7] = static_cast<char>(blob[7] ^ 0x40);
   sqlite3_stmt* write = nullptr;
   ASSERT_EQ(sqlite3_prepare_v2(db, "UPDATE evaluation_records SET objectives = ?1 WHERE id = ?2", -1, &write, nullptr),
             SQLITE_OK);

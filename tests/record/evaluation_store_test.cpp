@@ -254,10 +254,12 @@ TEST_F(StoreTest, ARowThatFailsItsChecksumIsNotReused) {
     EXPECT_FALSE(store.find(rows[2].x).has_value());
     store.append(rows[1]);  // ... and recorded anew
   }
-  auto store = EvaluationStore::open(db_, "fp", vars_, true);
-  EXPECT_EQ(store.damaged_rows_removed(), 0u);
-  EXPECT_EQ(store.size(), 2u);
-  EXPECT_TRUE(same_record(*store.find(rows[1].x), rows[1]));
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, true);
+    EXPECT_EQ(store.damaged_rows_removed(), 0u);
+    EXPECT_EQ(store.size(), 2u);
+    EXPECT_TRUE(same_record(*store.find(rows[1].x), rows[1]));
+  }
   EXPECT_EQ(sql_text(db_, "PRAGMA integrity_check"), "ok");
 }
 

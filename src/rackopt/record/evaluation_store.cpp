@@ -872,6 +872,10 @@ std::size_t EvaluationStore::failed_count() const { return impl_->failed; }
 std::size_t EvaluationStore::committed_size() const { return impl_->committed; }
 std::size_t EvaluationStore::damaged_rows_removed() const { return impl_->damaged; }
 std::size_t EvaluationStore::unchecked_rows() const { return impl_->unchecked; }
+std::int64_t EvaluationStore::last_id() const {
+  impl_->require_open("EvaluationStore::last_id");
+  return impl_->scalar("SELECT coalesce(max(id), 0) FROM evaluation_records");
+}
 std::size_t EvaluationStore::dimension() const { return impl_->variables.size(); }
 const std::vector<std::string>& EvaluationStore::variable_names() const { return impl_->variables; }
 std::vector<std::string> EvaluationStore::metric_names() const { return impl_->metric_by_id; }

@@ -160,6 +160,9 @@ class EvaluationStore {
   // them. Rows recorded before checksums (schema version 3 or older) cannot
   // be checked: they are kept, and counted by unchecked_rows().
   std::size_t damaged_rows_removed() const;
+  // The largest id recorded so far (0 for none): rows removed at open leave
+  // gaps, so ids up to it are not all present.
+  std::int64_t last_id() const;
   std::size_t unchecked_rows() const;
   std::size_t dimension() const;       // variables per x
   const std::vector<std::string>& variable_names() const;
