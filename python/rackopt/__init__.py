@@ -18,7 +18,36 @@ from typing import Dict, List, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _rackopt
+
+def _other_interpreter_message() -> Optional[str]:
+    """Why the compiled module cannot load when it was built for another
+    Python (its file name carries that Python's ABI tag), naming the
+    interpreter it was built with; None when that is not the reason."""
+    import glob
+    import sys
+    import sysconfig
+
+    here = os.path.dirname(os.path.abspath(__file__))
+    built = sorted(os.path.basename(p) for p in glob.glob(os.path.join(here, "_rackopt*.so")))
+    suffix = sysconfig.get_config_var("EXT_SUFFIX") or ".so"
+    if not built or any(name.endswith(suffix) for name in built):
+        return None
+    try:
+        from ._build import PYTHON_EXECUTABLE as interpreter
+    except ImportError:
+        interpreter = "the python3 rackopt was built with"
+    return (f"rackopt's compiled module {built[0]} was built for another Python than this one "
+            f"({sys.executable}, which loads *{suffix}): run {interpreter} instead, or rebuild rackopt "
+            f"with -DPython3_EXECUTABLE={sys.executable} (docs/python.md)")
+
+
+try:
+    from . import _rackopt
+except ImportError as _error:
+    _message = _other_interpreter_message()
+    if _message is None:
+        raise
+    raise ImportError(_message) from _error
 from ._rackopt import DesignError, InputError
 
 __version__ = _rackopt.__version__

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "python_bindings.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/marked_yaml/input_file.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
@@ -267,11 +268,12 @@ void bind_problem(py::module_& m) {
            })
       .def(
           "stiffness_curve",
-          [](const Problem& p, int positions_per_period) {
+          [](const Problem& p, long positions_per_period) {
+            if (positions_per_period != 0) check_count(positions_per_period, kPositionsPerPeriodLimit, "positions_per_period");
             StiffnessCurve c;
             {
               py::gil_scoped_release free;
-              c = MeshStiffnessModel(p.drive()).curve(CurveDetail::kFull, positions_per_period);
+              c = MeshStiffnessModel(p.drive()).curve(CurveDetail::kFull, static_cast<int>(positions_per_period));
             }
             return curve_dict(c);
           },
@@ -287,14 +289,17 @@ void bind_problem(py::module_& m) {
            })
       .def(
           "wear_reliability",
-          [](const Problem& p, std::optional<long> samples, std::optional<long> seed, unsigned threads) {
+          [](const Problem& p, std::optional<long> samples, std::optional<long> seed, long threads) {
+            // Python's ints are unbounded: checked here before the library's
+            // unsigned takes them (run_wear_reliability checks the rest).
+            check_count(threads, kThreadsLimit, "threads");
             std::optional<WearReliabilityResult> r;
             {
               py::gil_scoped_release free;
               WearReliabilityOptions opt = wear_reliability_options(p.drive());
               opt.samples = samples;
               opt.seed = seed;
-              opt.threads = threads;
+              opt.threads = static_cast<unsigned>(threads);
               r = run_wear_reliability(p.drive(), opt);
             }
             py::dict d = py::module_::import("json").attr("loads")(wear_json(p.drive(), *r, WearFiles{}, 0.0));
@@ -307,20 +312,24 @@ void bind_problem(py::module_& m) {
             d["criteria"] = r->criteria;
             return d;
           },
-          py::arg("samples") = std::nullopt, py::arg("seed") = std::nullopt, py::arg("threads") = 0u)
+          py::arg("samples") = std::nullopt, py::arg("seed") = std::nullopt, py::arg("threads") = 0L)
       .def(
           "metrics",
-          [](const Problem& p, const std::vector<std::string>& names, std::optional<int> positions_per_period,
-             std::optional<long> reliability_samples, std::optional<long> reliability_seed, unsigned threads) {
+          [](const Problem& p, const std::vector<std::string>& names, std::optional<long> positions_per_period,
+             std::optional<long> reliability_samples, std::optional<long> reliability_seed, long threads) {
+            // Python's ints are unbounded: the narrower library types take them
+            // only once inside the shared limits (evaluate_metrics checks them too).
+            if (positions_per_period) check_count(*positions_per_period, kPositionsPerPeriodLimit, "positions_per_period");
+            check_count(threads, kThreadsLimit, "threads");
             std::vector<metrics::MetricRequest> requests;
             for (const std::string& n : names) {
               requests.push_back(metrics::resolve_request(metrics::parse_metric_request(n)));
             }
             metrics::MetricOptions opt;
-            opt.positions_per_period = positions_per_period;
+            if (positions_per_period) opt.positions_per_period = static_cast<int>(*positions_per_period);
             opt.reliability_samples = reliability_samples;
             opt.reliability_seed = reliability_seed;
-            opt.threads = threads;
+            opt.threads = static_cast<unsigned>(threads);
             metrics::MetricValues v;
             {
               py::gil_scoped_release free;
@@ -346,7 +355,7 @@ void bind_problem(py::module_& m) {
           },
           py::arg("names"), py::arg("positions_per_period") = std::nullopt,
           py::arg("reliability_samples") = std::nullopt, py::arg("reliability_seed") = std::nullopt,
-          py::arg("threads") = 1u);
+          py::arg("threads") = 1L);
 
   m.def("metric_definitions", [] {
     py::list out;

@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "python_bindings.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/marked_yaml/input_file.hpp"
 #include "rackopt/output/folder_lock.hpp"
+#include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/study_runner.hpp"
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
@@ -44,9 +46,26 @@ class PythonStop {
   std::atomic<bool> stopped_{false};
 };
 
+// `text` with every `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+  return text;
+}
+
+// The store and the folder lock advise in the command line's words
+// (--resume, --out); a Python caller passes resume=True and out= instead.
+std::string in_python_words(const std::string& message) {
+  return replaced(replaced(replaced(message, "--resume", "resume=True"), "another --out folder",
+                           "another output folder (out=...)"),
+                  "--out", "out=");
+}
+
 py::dict run(const std::string& study_text, const std::string& study_name, const std::string& base_dir,
              const std::vector<std::string>& overrides, const std::optional<Problem>& problem,
-             const std::string& out_dir, unsigned threads, bool resume) {
+             const std::string& out_dir, long threads, bool resume) {
+  check_count(threads, kThreadsLimit, "threads");  // before the library's unsigned takes it
   std::optional<studyfile::InMemoryProblem> given;
   if (problem) given = studyfile::InMemoryProblem{problem->yaml_text(), problem->name(), problem->overrides()};
   const study::StudySpec spec =
@@ -57,14 +76,20 @@ py::dict run(const std::string& study_text, const std::string& study_name, const
   auto stop = std::make_shared<PythonStop>();
   {
     py::gil_scoped_release free;
-    const FolderLock lock(out);  // held until the report is written
-    study::RunOptions opt;
-    opt.out_dir = out;
-    opt.resume = resume;
-    opt.threads = threads;
-    opt.stop = [stop] { return (*stop)(); };
-    const study::StudyResult result = study::run_study(spec, opt);
-    summary = study_report::write_study_report(spec, result, out).summary_json;
+    try {
+      const FolderLock lock(out);  // held until the report is written
+      study::RunOptions opt;
+      opt.out_dir = out;
+      opt.resume = resume;
+      opt.threads = static_cast<unsigned>(threads);
+      opt.stop = [stop] { return (*stop)(); };
+      const study::StudyResult result = study::run_study(spec, opt);
+      summary = study_report::write_study_report(spec, result, out).summary_json;
+    } catch (const record::OutputFolderConflict& e) {
+      throw record::OutputFolderConflict(in_python_words(e.what()));
+    } catch (const OutputFolderInUse& e) {
+      throw OutputFolderInUse(in_python_words(e.what()));
+    }
   }
   if (PyErr_Occurred()) throw py::error_already_set();  // Ctrl-C: the report is written, now raise
   py::dict d = py::module_::import("json").attr("loads")(summary);

@@ -55,6 +55,11 @@ struct CommandLine {
 // options are never silently ignored.
 CommandLine parse_command_line(int argc, char** argv);
 
+// Whether argv asks for JSON, read before parsing so that a usage error is
+// a JSON object too: the last `--json` or `--json=VALUE` (true/false, on/off,
+// yes/no, 1/0) before a `--`, after which every argument is a file name.
+bool json_requested(int argc, char** argv);
+
 // `rackopt --help`: the commands, one line each.
 std::string program_help();
 

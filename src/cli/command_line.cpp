@@ -4,21 +4,27 @@
 // cannot disagree.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
+#include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "cli.hpp"
 #include "rackopt/core/drive.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
+#include "rackopt/output/json_writer.hpp"
 #include "rackopt/version.hpp"
 
 namespace rackopt::cli {
 namespace {
 
-constexpr long kMaxThreads = 1024;
+constexpr long kMaxThreads = kThreadsLimit.hi;  // 0 (all cores) is what leaving --threads out means
 constexpr long kMaxLevel = 6;  // FeOptions::level
-constexpr long kMaxSeed = 2147483647L;
+constexpr long kMaxSeed = kSeedLimit.hi;
 
 long parse_whole(const std::string& flag, const std::string& text, long lo, long hi) {
   std::size_t used = 0;
@@ -69,10 +75,13 @@ void add_out(CLI::App& cmd, Args& a, const std::string& default_dir) {
 }
 
 void add_json(CLI::App& cmd, Args& a, const std::string& what) {
+  // --json=false is no JSON: the one flag that takes a value, read the same
+  // way by json_requested() before parsing.
   cmd.add_flag("--json", a.json,
                "print one JSON object on stdout: " + what +
                    ";\non an error {\"ok\": false, \"error\": kind, \"message\": text};\nthe text for people "
-                   "goes to stderr");
+                   "goes to stderr; --json=false: none")
+      ->disable_flag_override(false);
 }
 
 void add_threads(CLI::App& cmd, Args& a, const std::string& default_text) {
@@ -187,7 +196,8 @@ std::unique_ptr<CLI::App> make_app(Args& a) {
   app->get_formatter()->label("Usage", "usage");
   app->get_formatter()->column_width(26);
   app->get_formatter()->label("SUBCOMMAND", "COMMAND");
-  app->set_version_flag("-V,--version", std::string("rackopt ") + RACKOPT_VERSION_STRING);
+  app->set_version_flag("-V,--version", std::string("rackopt ") + RACKOPT_VERSION_STRING,
+                        "print the version and exit (with --json: {\"ok\": true, \"version\": ...})");
   // Unknown arguments are collected, not thrown, so that the error can name
   // the command and suggest the nearest option.
   app->allow_extras();
@@ -196,15 +206,15 @@ std::unique_ptr<CLI::App> make_app(Args& a) {
   app->require_subcommand(0, 1);
   // A value given twice: the last one counts, as with most programs.
   app->option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
-  // A flag takes no value: main.cpp looks for a bare --json before parsing,
-  // to make a usage error a JSON object too.
+  // A flag takes no value (--resume=false would read as a typo of intent);
+  // --json alone does, as json_requested() reads it before parsing.
   app->option_defaults()->disable_flag_override();
   add_check(*app, a);
   add_stiffness(*app, a);
   add_wear(*app, a);
   add_fe(*app, a);
   add_run(*app, a);
-  app->add_subcommand("version", "print the version, as --version does");
+  add_json(*app->add_subcommand("version", "print the version, as --version does"), a, "{\"ok\": true, \"version\": text}");
   app->add_subcommand("help", "list the commands, or with COMMAND its options, as --help does");
   for (CLI::App* c : app->get_subcommands([](CLI::App*) { return true; })) c->allow_extras()->group("Commands");
   app->footer(
@@ -232,6 +242,64 @@ std::vector<std::string> long_names(const CLI::App& cmd) {
   return names;
 }
 
+// The version line, or with --json the object {"ok": true, "version": ...}.
+std::string version_text(bool json) {
+  if (!json) return std::string("rackopt ") + RACKOPT_VERSION_STRING + "\n";
+  JsonWriter j;
+  j.begin_object().key("ok").value(true).key("version").value(std::string(RACKOPT_VERSION_STRING)).end_object();
+  return j.str() + "\n";
+}
+
+// The value of a value option as written: empty or another option means the
+// value was forgotten. CLI11 would take `--out= --json` as the folder
+// "--json", `-o=DIR` as the folder "=DIR" and `--out ""` as the working
+// directory, so argv is checked before it parses. A negative number ("-1")
+// is left to the option's own range check.
+void check_option_value(const std::string& option, const std::string& long_name, const std::string& value,
+                        const std::string& command) {
+  if (value.empty()) throw UsageError(option + " needs a value, got an empty one", command);
+  const bool number = value.size() > 1 && (std::isdigit(static_cast<unsigned char>(value[1])) || value[1] == '.');
+  if (value[0] == '-' && value.size() > 1 && !number) {
+    throw UsageError(option + " needs a value, got the option " + value +
+                         " (a value that starts with '-' is written " + long_name + "=./" + value + ")",
+                     command);
+  }
+}
+
+// Every value option's value in argv (before "--"), by check_option_value;
+// a short option joined to its value by '=' (`-o=DIR`) is refused too.
+void refuse_missing_values(CLI::App& app, int argc, char** argv) {
+  std::set<std::string> commands;
+  std::map<std::string, std::string> long_of;  // "-o" and "--out" -> "--out"
+  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) {
+    commands.insert(c->get_name());
+    for (const CLI::Option* o : c->get_options()) {
+      if (!o->nonpositional() || o->get_expected_max() == 0) continue;  // FILE, flags
+      const std::string long_name = "--" + o->get_lnames().front();
+      for (const std::string& n : o->get_snames()) long_of["-" + n] = long_name;
+      for (const std::string& n : o->get_lnames()) long_of["--" + n] = long_name;
+    }
+  }
+  std::string command;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a(argv[i]);
+    if (a == "--") break;
+    if (command.empty() && commands.count(a) > 0) command = a;
+    const std::size_t eq = a.find('=');
+    if (a.rfind("--", 0) == 0 && eq != std::string::npos && long_of.count(a.substr(0, eq)) > 0) {
+      check_option_value(a.substr(0, eq), long_of[a.substr(0, eq)], a.substr(eq + 1), command);
+    } else if (long_of.count(a) > 0) {
+      if (i + 1 < argc) check_option_value(a, long_of[a], argv[++i], command);  // else CLI11: "needs a value"
+    } else if (a.size() > 2 && a[0] == '-' && a[1] != '-' && long_of.count(a.substr(0, 2)) > 0) {
+      if (a[2] == '=') {
+        throw UsageError(a.substr(0, 2) + " takes its value after a space (" + a.substr(0, 2) + " " + a.substr(3) +
+                             "), not after '='; got " + a,
+                         command);
+      }
+    }
+  }
+}
+
 // "--set, --out, --json": what `cmd` accepts besides --help.
 std::string accepted_options(const CLI::App& cmd) {
   std::string out;
@@ -250,8 +318,13 @@ std::string did_you_mean(const std::string& given, const std::vector<std::string
 // The first argument `cmd` did not take, as a usage error: an option of
 // another command, an unknown option (with the nearest one), or an argument
 // too many.
-[[noreturn]] void refuse_extra(CLI::App& app, const CLI::App& cmd, const std::string& extra) {
+[[noreturn]] void refuse_extra(CLI::App& app, const CLI::App& cmd, const std::string& extra, bool after_dashes) {
   const std::string name = cmd.get_name();
+  if (after_dashes) {
+    throw UsageError("unexpected argument " + extra + " after '--' (every argument after '--' is a file name, and " +
+                         name + " takes one FILE; options go before '--')",
+                     name);
+  }
   if (!is_option(extra)) throw UsageError("unexpected argument " + extra, name);
   const std::string option = extra.substr(0, extra.find('='));
   for (const CLI::App* other : app.get_subcommands([](const CLI::App*) { return true; })) {
@@ -306,13 +379,14 @@ CommandLine parse_command_line(int argc, char** argv) {
     line.text = help_text(*app, std::vector<std::string>(argv + 2, argv + argc));
     return line;
   }
+  refuse_missing_values(*app, argc, argv);
   try {
     app->parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     line.text = app->help();  // the selected command's, if one was given
     return line;
-  } catch (const CLI::CallForVersion& e) {
-    line.text = std::string(e.what()) + "\n";
+  } catch (const CLI::CallForVersion&) {
+    line.text = version_text(json_requested(argc, argv));
     return line;
   } catch (const CLI::RequiredError&) {  // the only required argument is a command's FILE
     const std::string cmd = selected_command(*app);
@@ -324,7 +398,12 @@ CommandLine parse_command_line(int argc, char** argv) {
   } catch (const UsageError& e) {  // a bad value (add_whole): it knows no command
     throw UsageError(e.what(), selected_command(*app));
   }
-  const std::vector<std::string> before = app->remaining();
+  // CLI11 leaves the "--" itself among the arguments it did not take.
+  auto without_dashes = [](std::vector<std::string> args) {
+    args.erase(std::remove(args.begin(), args.end(), std::string("--")), args.end());
+    return args;
+  };
+  const std::vector<std::string> before = without_dashes(app->remaining());
   const std::vector<CLI::App*> chosen = app->get_subcommands();
   if (chosen.empty()) {
     if (before.empty()) throw UsageError("no command given");
@@ -335,16 +414,43 @@ CommandLine parse_command_line(int argc, char** argv) {
   }
   CLI::App& cmd = *chosen.front();
   line.args.command = cmd.get_name();
+  // Whether `arg` came after a "--" (a file name, whatever it looks like).
+  auto after_dashes = [&](const std::string& arg) {
+    const char* const* begin = argv + 1;
+    const char* const* end = argv + argc;
+    const char* const* dashes = std::find_if(begin, end, [](const char* a) { return std::string(a) == "--"; });
+    return std::find_if(dashes, end, [&](const char* a) { return arg == a; }) != end;
+  };
+  if (!before.empty() && after_dashes(before.front())) refuse_extra(*app, cmd, before.front(), true);
   if (!before.empty()) {
     throw UsageError("option " + before.front() + " before the command; options go after it", cmd.get_name());
   }
-  const std::vector<std::string> extra = cmd.remaining();
-  if (!extra.empty()) refuse_extra(*app, cmd, extra.front());
+  const std::vector<std::string> extra = without_dashes(cmd.remaining());
+  if (!extra.empty()) refuse_extra(*app, cmd, extra.front(), after_dashes(extra.front()));
   if (line.args.command == "version") {
-    line.text = std::string("rackopt ") + RACKOPT_VERSION_STRING + "\n";
+    line.text = version_text(line.args.json);
     line.args.command.clear();
   }
   return line;
+}
+
+bool json_requested(int argc, char** argv) {
+  bool json = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a(argv[i]);
+    if (a == "--") break;  // after it, "--json" is a file name
+    if (a == "--json") {
+      json = true;
+    } else if (a.rfind("--json=", 0) == 0) {
+      // CLI11's words for a flag's value; anything else is its usage error.
+      const std::string v = a.substr(7);
+      for (const char* yes : {"true", "on", "yes", "1", "enable"}) json = json || v == yes;
+      for (const char* no : {"false", "off", "no", "0", "disable"}) {
+        if (v == no) json = false;
+      }
+    }
+  }
+  return json;
 }
 
 std::string program_help() {

@@ -77,11 +77,10 @@ int main(int argc, char** argv) {
   }
 #endif
   // Known before parsing, so that a usage error is a JSON object too.
-  bool json = false;
+  const bool json = json_requested(argc, argv);
   bool args_command_empty = true;
   for (int i = 1; i < argc; ++i) {
     const std::string a(argv[i]);
-    json = json || a == "--json";
     if (!a.empty() && a[0] != '-') args_command_empty = false;
   }
   CommandLine line;

@@ -73,11 +73,73 @@ TEST(CommandLine, HelpCommandIsHelpOption) {
 }
 
 TEST(CommandLine, VersionIsTheBuildsVersion) {
-  for (const char* args : {"--version", "-V", "version"}) {
+  for (const char* args : {"--version", "-V", "version", "--version --json=false"}) {
     const CliResult r = run_cli(args);
     EXPECT_EQ(r.code, 0) << args;
     EXPECT_EQ(r.out, std::string("rackopt ") + RACKOPT_VERSION_STRING + "\n") << args;
   }
+  // With --json, like every other answer, one JSON object.
+  for (const char* args : {"--version --json", "-V --json", "version --json"}) {
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    ASSERT_TRUE(nlohmann::json::accept(r.out)) << args << "\n" << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["ok"], true) << args;
+    EXPECT_EQ(j["version"], RACKOPT_VERSION_STRING) << args;
+  }
+}
+
+// A value option given no value, an empty one or another option: CLI11
+// alone would make `--out= --json` write into a folder named "--json".
+TEST(CommandLine, AnEmptyValueOrAnOptionForAValueIsAUsageErrorNamingTheOption) {
+  struct Case {
+    std::string args;
+    std::string says;
+  };
+  const std::string dir = scratch_path("never_written");
+  for (const Case& c : {Case{"stiffness problems/rack_railway.yaml --out= --json", "--out needs a value"},
+                        Case{"stiffness problems/rack_railway.yaml --json --out ''", "--out needs a value, got an empty one"},
+                        Case{"stiffness problems/rack_railway.yaml --json -o --json", "-o needs a value, got the option --json"},
+                        Case{"stiffness problems/rack_railway.yaml --json -o=" + dir, "-o takes its value after a space"},
+                        Case{"check problems/rack_railway.yaml --set= --json", "--set needs a value"},
+                        Case{"wear problems/ship_lift.yaml --samples= --json", "--samples needs a value"}}) {
+    const CliResult r = run_cli(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    // --json was not taken for the value: the error is the one JSON object.
+    ASSERT_TRUE(nlohmann::json::accept(r.out)) << c.args << "\n" << r.out;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["error"], "usage") << c.args;
+    EXPECT_NE(j["message"].get<std::string>().find(c.says), std::string::npos) << c.args << "\n" << j["message"];
+  }
+  EXPECT_FALSE(std::filesystem::exists(std::string(RACKOPT_SOURCE_DIR) + "/--json"));
+  std::filesystem::remove_all(std::string(RACKOPT_SOURCE_DIR) + "/--json");  // left by a failing run
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(CommandLine, JsonTakesTrueOrFalse) {
+  const CliResult no = run_cli("check problems/rack_railway.yaml --json=false");
+  EXPECT_EQ(no.code, 0) << no.err;
+  EXPECT_FALSE(nlohmann::json::accept(no.out)) << no.out;
+  EXPECT_NE(no.out.find("ok: problems/rack_railway.yaml"), std::string::npos) << no.out;
+  const CliResult yes = run_cli("check problems/rack_railway.yaml --json=true");
+  EXPECT_EQ(yes.code, 0) << yes.err;
+  EXPECT_TRUE(nlohmann::json::accept(yes.out)) << yes.out;
+  // The last one counts, before parsing as after: a usage error is text here.
+  const CliResult last = run_cli("check problems/rack_railway.yaml --json --json=false --jsno");
+  EXPECT_EQ(last.code, 2);
+  EXPECT_EQ(last.out, "");
+  EXPECT_NE(last.err.find("unknown option --jsno"), std::string::npos) << last.err;
+}
+
+// After "--" every argument is a file name, "--json" too: no JSON, and the
+// message says why it is one argument too many.
+TEST(CommandLine, AnArgumentAfterTheDoubleDashIsAFileName) {
+  const CliResult r = run_cli("check problems/ship_lift.yaml -- --json");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("unexpected argument --json after '--'"), std::string::npos) << r.err;
+  const CliResult file = run_cli("check -- problems/ship_lift.yaml");
+  EXPECT_EQ(file.code, 0) << file.err;
 }
 
 TEST(CommandLine, AValueFollowsItsOptionOrAnEqualsSign) {
@@ -160,9 +222,9 @@ TEST(CommandLine, AMissingValueOrAMisplacedOptionIsAUsageError) {
   const CliResult second = run_cli("check problems/ship_lift.yaml stiffness");
   EXPECT_EQ(second.code, 2);
   EXPECT_NE(second.err.find("unexpected argument stiffness"), std::string::npos) << second.err;
-  const CliResult flag_value = run_cli("check problems/ship_lift.yaml --json=false");
+  const CliResult flag_value = run_cli("run studies/rack_railway_sizing.yaml --resume=false");
   EXPECT_EQ(flag_value.code, 2) << flag_value.err;
-  EXPECT_NE(flag_value.err.find("--json takes no value"), std::string::npos) << flag_value.err;
+  EXPECT_NE(flag_value.err.find("--resume takes no value"), std::string::npos) << flag_value.err;
 }
 
 }  // namespace

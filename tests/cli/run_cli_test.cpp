@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include <sqlite3.h>
+
 #include "rackopt/record/evaluation_store.hpp"
 #include "rackopt/study/study_spec.hpp"
 #include "rackopt/studyfile/study_loader.hpp"
@@ -323,6 +325,83 @@ TEST(RunCli, UsedFolderWithoutResumeIsRefused) {
   const CliResult other = run_cli("run '" + path + "' --out " + dir + "/out --resume");
   EXPECT_EQ(other.code, 2);
   EXPECT_NE(other.err.find("another study"), std::string::npos) << other.err;
+}
+
+// The default output folder comes from the study's name: a name no file
+// system takes is the study's fault, said at study.name (exit 2), before
+// anything is written.
+TEST(RunCli, AStudyNameTooLongForTheDefaultFolderIsBadInput) {
+  const std::string name(300, 'n');
+  const CliResult r = run_cli("run studies/rack_railway_sizing.yaml --json --set study.name=" + name);
+  EXPECT_EQ(r.code, 2) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["error"], "input");
+  const std::string message = j["message"];
+  EXPECT_NE(message.find("study.name"), std::string::npos) << message;
+  EXPECT_NE(message.find("at most 255"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(std::string(RACKOPT_SOURCE_DIR) + "/out/" + name));
+}
+
+// Flips one bit of one recorded row's objectives, with SQLite directly as
+// a failing disk or a hand edit would.
+void flip_a_bit_of_row(const std::string& db_path, int id) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2(db_path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr), SQLITE_OK);
+  sqlite3_stmt* read = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT objectives FROM evaluation_records WHERE id = ?1", -1, &read, nullptr),
+            SQLITE_OK);
+  sqlite3_bind_int(read, 1, id);
+  ASSERT_EQ(sqlite3_step(read), SQLITE_ROW);
+  const auto* p = static_cast<const char*>(sqlite3_column_blob(read, 0));
+  std::string blob(p, static_cast<std::size_t>(sqlite3_column_bytes(read, 0)));
+  sqlite3_finalize(read);
+  ASSERT_GE(blob.size(), 8u);
+  // The top bit of the exponent: a positive objective of a few units
+  // becomes about 1e-308, the best of the sweep if it were believed.
+  blob[7] = static_cast<char>(blob[7] ^ 0x40);
+  sqlite3_stmt* write = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "UPDATE evaluation_records SET objectives = ?1 WHERE id = ?2", -1, &write, nullptr),
+            SQLITE_OK);
+  sqlite3_bind_blob(write, 1, blob.data(), static_cast<int>(blob.size()), SQLITE_TRANSIENT);
+  sqlite3_bind_int(write, 2, id);
+  EXPECT_EQ(sqlite3_step(write), SQLITE_DONE);
+  sqlite3_finalize(write);
+  sqlite3_close(db);
+}
+
+TEST(RunCli, ADamagedRecordedRowIsRecomputedOnResume) {
+  const std::string dir = scratch_dir("checksum");
+  const std::string path = dir + "/grid.yaml";
+  std::ofstream(path) << "study: {name: checksum grid, kind: sweep, seed: 3}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "variables:\n  rack.span: {lower: 1.2 m, upper: 3 m}\n"
+                      << "objectives:\n  - {metric: stiffness_fluctuation, scale: 1}\n"
+                      << "sweep: {method: grid, levels: 5}\n"
+                      << "output: {plots: off, report: on, stiffness_curve: off}\n";
+  const std::string out = dir + "/out";
+  const CliResult first = run_cli("run '" + path + "' --json --out " + out);
+  ASSERT_EQ(first.code, 0) << first.err;
+  const auto before = nlohmann::json::parse(first.out);
+  ASSERT_EQ(before["evaluations"], 5);
+  // Resumed as recorded: every row checks out and is reused.
+  fs::remove(out + "/summary.json");
+  const CliResult clean = run_cli("run '" + path + "' --json --resume --out " + out);
+  ASSERT_EQ(clean.code, 0) << clean.err;
+  EXPECT_EQ(nlohmann::json::parse(clean.out)["reused_evaluations"], 5);
+  EXPECT_EQ(nlohmann::json::parse(clean.out)["damaged_records_recomputed"], 0);
+
+  flip_a_bit_of_row(out + "/evaluations.sqlite", 3);
+  const CliResult resumed = run_cli("run '" + path + "' --json --resume --out " + out);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const auto j = nlohmann::json::parse(resumed.out);
+  EXPECT_EQ(j["damaged_records_recomputed"], 1);
+  EXPECT_EQ(j["reused_evaluations"], 4);  // the damaged one was computed again
+  EXPECT_EQ(j["evaluations"], 5);
+  EXPECT_EQ(j["best"], before["best"]);  // reused, the damaged row would have been the best
+  EXPECT_NE(resumed.err.find("1 recorded evaluation failed its checksum and was recomputed"), std::string::npos)
+      << resumed.err;
+  EXPECT_NE(read_text(out + "/report.md").find("1 recorded evaluation failed its checksum and was recomputed"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -200,7 +200,7 @@ TEST_F(StoreTest, SchemaOneFileIsUpgradedAndItsRowsHaveNoWarnings) {
     EXPECT_EQ(store.append(fresh), 2);
   }
   EXPECT_EQ(sql_text(db_, has_column), "1");
-  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 3");
+  EXPECT_EQ(sql_text(db_, "SELECT value FROM meta WHERE key = 'rackopt.schema'"), "rackopt-evaluations 4");
   // The old row got its real columns from its blob; the view has them.
   EXPECT_EQ(sql_text(db_, "SELECT module_m FROM evaluations WHERE id = 1"), "0.002");
   EXPECT_EQ(sql_text(db_, "SELECT face_width_m FROM evaluations WHERE id = 2"), "0.06");
@@ -210,6 +210,57 @@ TEST_F(StoreTest, SchemaOneFileIsUpgradedAndItsRowsHaveNoWarnings) {
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_TRUE(rows[0].warnings.empty());
   EXPECT_TRUE(same_record(rows[1], fresh));
+  // The old row has no checksum to check: kept and counted; the new one has.
+  EXPECT_EQ(store.unchecked_rows(), 1u);
+  EXPECT_EQ(store.damaged_rows_removed(), 0u);
+}
+
+// Sets one cell of one row with SQLite directly, as a failing disk or a hand
+// edit would change it.
+void set_cell(const std::string& path, const std::string& sql, const std::string& blob) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* s = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  sqlite3_bind_blob(s, 1, blob.data(), static_cast<int>(blob.size()), SQLITE_TRANSIENT);
+  EXPECT_EQ(sqlite3_step(s), SQLITE_DONE) << sqlite3_errmsg(db);
+  sqlite3_finalize(s);
+  sqlite3_close(db);
+}
+
+TEST_F(StoreTest, ARowThatFailsItsChecksumIsNotReused) {
+  std::vector<RecordedEvaluation> rows(3, tricky_evaluation());
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].x = {1.0 + static_cast<double>(i), 2.0};
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, false);
+    for (const auto& r : rows) store.append(r);
+  }
+  // One bit of row 2's second objective (DBL_MAX) flipped.
+  std::string objectives;
+  for (double v : rows[1].objectives)
+    for (int b = 0; b < 8; ++b) objectives.push_back(static_cast<char>((std::bit_cast<std::uint64_t>(v) >> (8 * b)) & 0xffu));
+  objectives[8] = static_cast<char>(objectives[8] ^ 0x01);
+  set_cell(db_, "UPDATE evaluation_records SET objectives = ?1 WHERE id = 2", objectives);
+  // And row 3's message, changed by one byte as text.
+  set_cell(db_, "UPDATE evaluation_records SET message = CAST(?1 AS TEXT) WHERE id = 3", "pointed tooth: s_a = -2e-4 m");
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, true);
+    EXPECT_EQ(store.damaged_rows_removed(), 2u);
+    EXPECT_EQ(store.unchecked_rows(), 0u);
+    EXPECT_EQ(store.size(), 1u);
+    ASSERT_TRUE(store.find(rows[0].x).has_value());
+    EXPECT_TRUE(same_record(*store.find(rows[0].x), rows[0]));
+    EXPECT_FALSE(store.find(rows[1].x).has_value());  // evaluated again by the runner...
+    EXPECT_FALSE(store.find(rows[2].x).has_value());
+    store.append(rows[1]);  // ... and recorded anew
+  }
+  {
+    auto store = EvaluationStore::open(db_, "fp", vars_, true);
+    EXPECT_EQ(store.damaged_rows_removed(), 0u);
+    EXPECT_EQ(store.size(), 2u);
+    EXPECT_TRUE(same_record(*store.find(rows[1].x), rows[1]));
+  }
+  EXPECT_EQ(sql_text(db_, "PRAGMA integrity_check"), "ok");
 }
 
 TEST_F(StoreTest, UnknownSchemaVersionIsRefused) {

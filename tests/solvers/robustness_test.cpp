@@ -218,6 +218,21 @@ TEST(Budget, AtMostNEvaluations) {
   }
 }
 
+// Our callbacks end an Ipopt run at the budget by refusing to evaluate, so
+// Ipopt's own status (Invalid_Number_Detected, User_Requested_Stop) is not
+// why it ended: the message says the budget was reached.
+TEST(Budget, IpoptStoppedByTheBudgetSaysSo) {
+  const auto p = rosenbrock();
+  for (std::size_t budget : {1u, 5u, 37u}) {
+    SCOPED_TRACE(budget);
+    Seen seen;
+    const rs::SolverResult r = rs::minimize(p, std::vector<double>{-1.2, 1.0}, ipopt_settings(budget), seen.callbacks());
+    EXPECT_EQ(to_string(r.status), "max_evaluations") << r.solver_message;
+    EXPECT_NE(r.solver_message.find("budget reached"), std::string::npos) << r.solver_message;
+    EXPECT_EQ(r.solver_message.find("Invalid_Number_Detected"), std::string::npos) << r.solver_message;
+  }
+}
+
 TEST(Budget, StopRequestAndTimeLimit) {
   const auto p = rosenbrock();
   for (rs::SolverSettings s : {nlopt_settings("LN_COBYLA"), nlopt_settings("LD_SLSQP"), ipopt_settings()}) {

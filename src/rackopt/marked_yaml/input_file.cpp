@@ -7,11 +7,13 @@
 #include <system_error>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/marked_yaml/input_limits.hpp"
 
 namespace rackopt {
 
 std::string read_input_file(const std::string& path, const std::string& what) {
+  check_path_text(path, what);
   const SourceMark where{path, 0, 0};
   std::error_code ec;
   // An ifstream opens a directory without complaint on Linux and reads it as

@@ -12,7 +12,8 @@ namespace rackopt {
 // endless input costs no more than that.
 // Throws InputError at SourceMark{path, 0, 0} when the path cannot be opened
 // (with the system's reason), is a directory, or holds more than
-// kMaxInputBytes bytes (docs/input_limits.md).
+// kMaxInputBytes bytes (docs/input_limits.md), or when it holds a NUL byte
+// (check_path_text, core/run_limits.hpp).
 std::string read_input_file(const std::string& path, const std::string& what);
 
 }  // namespace rackopt

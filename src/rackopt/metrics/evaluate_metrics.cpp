@@ -13,6 +13,7 @@
 
 #include "rackopt/core/error.hpp"
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/metrics/model_results.hpp"
@@ -90,6 +91,12 @@ const MetricValue& MetricValues::at(std::string_view label) const {
 
 void check_metric_requests(const Drive& drive, std::span<const MetricRequest> requests,
                            const MetricOptions& o) {
+  // The caller's counts, against the limits the study loader applies to the
+  // same keys of metric_options.
+  if (o.reliability_samples) check_count(*o.reliability_samples, kSamplesLimit, "reliability_samples");
+  if (o.reliability_seed) check_count(*o.reliability_seed, kSeedLimit, "reliability_seed");
+  if (o.positions_per_period) check_count(*o.positions_per_period, kPositionsPerPeriodLimit, "positions_per_period");
+  check_count(o.threads, kThreadsLimit, "threads");
   std::uint8_t req = 0;
   bool reliability = false;
   for (const MetricRequest& r : requests) {

@@ -10,11 +10,13 @@
 #include <unistd.h>
 
 #include "rackopt/output/atomic_file.hpp"
+#include "rackopt/core/run_limits.hpp"
 
 namespace rackopt {
 
 FolderLock::FolderLock(const std::string& dir_text) {
   namespace fs = std::filesystem;
+  check_path_text(dir_text, "output folder");
   const fs::path dir(dir_text.empty() ? std::string(".") : dir_text);
   std::error_code ec;
   fs::create_directories(dir, ec);

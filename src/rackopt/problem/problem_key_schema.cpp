@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "rackopt/core/drive.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/statistics/goodness_of_fit.hpp"  // kMinBootstrapReplicates
 
 namespace rackopt {
@@ -93,7 +94,8 @@ constexpr KeySpec kKeySpecs[] = {
     {"faults[].width", {QuantityKind::kLength, {kMinSmallLength, 10.0, false, false}}},
     {"faults[].depth", {QuantityKind::kLength, {kMinSmallLength, 1.0, false, false}}},
     {"numerics.quadrature_order", {QuantityKind::kCount, {2, 64, false, false}}},
-    {"numerics.positions_per_period", {QuantityKind::kCount, {4, 10000, false, false}}},
+    {"numerics.positions_per_period",
+     {QuantityKind::kCount, {kPositionsPerPeriodLimit.lo, kPositionsPerPeriodLimit.hi, false, false}}},
     // Wear (docs/models/wear.md). Archard K spans mild wear ~1e-8 to severe
     // ~1e-2 (10.4); 1e-20..1 leaves room for any reading of a paper's k.
     {"wear.coefficient", {QuantityKind::kDimensionless, {1e-20, 1, false, false}}},
@@ -123,8 +125,8 @@ constexpr KeySpec kKeySpecs[] = {
     {"duty.travel_per_year", {QuantityKind::kSpeed, {1.0 / kSecondsPerYear, 1e9 / kSecondsPerYear, false, false}}},
     {"duty.strokes_per_year", {QuantityKind::kRate, {1e-3 / kSecondsPerYear, 1e12 / kSecondsPerYear, false, false}}},
     {"duty.stroke", {QuantityKind::kLength, {1e-3, 1e5, false, false}}},
-    {"reliability.samples", {QuantityKind::kCount, {1, kMaxReliabilitySamples, false, false}}},
-    {"reliability.seed", {QuantityKind::kCount, {0, 2e9, false, false}}},
+    {"reliability.samples", {QuantityKind::kCount, {kSamplesLimit.lo, kSamplesLimit.hi, false, false}}},
+    {"reliability.seed", {QuantityKind::kCount, {kSeedLimit.lo, kSeedLimit.hi, false, false}}},
     {"reliability.ks_level", {QuantityKind::kDimensionless, {0.001, 0.5, false, false}}},
     {"reliability.bootstrap_replicates",
      {QuantityKind::kCount, {statistics::kMinBootstrapReplicates, 100000, false, false}}},

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <string_view>
 #include <unordered_map>
 
 #include "rackopt/core/fnv1a.hpp"
@@ -20,9 +21,11 @@ namespace {
 // Bumped whenever the tables change. Version 2 added the warnings; version
 // 3 renamed the table to evaluation_records, added the models and one real
 // column per variable and metric, and the `evaluations` view over them.
-// Files of versions 1 and 2 are upgraded in place when opened
+// Version 4 added each row's checksum (record_checksum).
+// Files of versions 1, 2 and 3 are upgraded in place when opened
 // (load_or_create).
-constexpr const char* kSchemaVersion = "rackopt-evaluations 3";
+constexpr const char* kSchemaVersion = "rackopt-evaluations 4";
+constexpr const char* kSchemaVersion3 = "rackopt-evaluations 3";
 constexpr const char* kSchemaVersion2 = "rackopt-evaluations 2";
 constexpr const char* kSchemaVersion1 = "rackopt-evaluations 1";
 constexpr const char* kSchemaKey = "rackopt.schema";
@@ -52,7 +55,8 @@ CREATE TABLE IF NOT EXISTS evaluation_records(
   gradient_probe INTEGER NOT NULL,
   seconds REAL NOT NULL,
   warnings TEXT NOT NULL DEFAULT '',
-  models TEXT NOT NULL DEFAULT '');
+  models TEXT NOT NULL DEFAULT '',
+  record_checksum INTEGER);
 CREATE INDEX IF NOT EXISTS evaluations_by_x ON evaluation_records(x_hash);
 )sql";
 
@@ -60,12 +64,18 @@ constexpr const char* kSelectColumns =
     "SELECT id, phase, x, objectives, inequality, equality, metric_ids, metric_values, ok, message, "
     "gradient_probe, seconds, warnings, models FROM evaluation_records ";
 
+// What a row's checksum covers, in its order, with x_hash first and the
+// checksum itself last (verify_checksums).
+constexpr const char* kChecksumColumns =
+    "SELECT id, x_hash, phase, x, objectives, inequality, equality, metric_ids, metric_values, ok, message, "
+    "gradient_probe, seconds, warnings, models, record_checksum FROM evaluation_records ";
+
 // The view's own columns: a variable or metric column takes another name.
 constexpr const char* kViewColumns[] = {"id", "phase", "ok", "message", "gradient_probe", "seconds", "models",
                                          "warnings"};
 // ... nor may it take a name of the record table's own columns.
 constexpr const char* kRecordColumns[] = {"x_hash", "x", "objectives", "inequality", "equality", "metric_ids",
-                                           "metric_values"};
+                                           "metric_values", "record_checksum"};
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -121,6 +131,43 @@ std::string encode_doubles(std::span<const double> v) {
 // FNV-1a over the encoded bytes: the index key of x (equality is then
 // checked on the full blob, so collisions only cost a comparison).
 std::int64_t hash_bytes(const std::string& bytes) { return std::bit_cast<std::int64_t>(fnv1a64(bytes)); }
+
+// The bytes of one row that resume reads, exactly as they are stored.
+struct RowBytes {
+  std::int64_t x_hash = 0;
+  std::string_view phase, x, objectives, inequality, equality, metric_ids, metric_values;
+  std::int64_t ok = 0;
+  std::string_view message;
+  std::int64_t gradient_probe = 0;
+  double seconds = 0;
+  std::string_view warnings, models;
+};
+
+// FNV-1a over every field of the row, each preceded by its length, so that a
+// flipped bit anywhere (or bytes moved from one field to the next) changes
+// it. Stored with the row; a row whose bytes no longer give it is damaged.
+std::int64_t row_checksum(const RowBytes& r) {
+  std::uint64_t h = kFnv1aOffsetBasis;
+  auto number = [&h](std::uint64_t v) {
+    std::string bytes;
+    put_le(bytes, v);
+    h = fnv1a64(bytes, h);
+  };
+  auto field = [&](std::string_view bytes) {
+    number(bytes.size());
+    h = fnv1a64(bytes, h);
+  };
+  number(static_cast<std::uint64_t>(r.x_hash));
+  for (std::string_view f : {r.phase, r.x, r.objectives, r.inequality, r.equality, r.metric_ids, r.metric_values})
+    field(f);
+  number(static_cast<std::uint64_t>(r.ok));
+  field(r.message);
+  number(static_cast<std::uint64_t>(r.gradient_probe));
+  number(std::bit_cast<std::uint64_t>(r.seconds));
+  field(r.warnings);
+  field(r.models);
+  return std::bit_cast<std::int64_t>(h);
+}
 
 // Warnings as one TEXT cell: each warning followed by a line break; inside a
 // warning a backslash is written as two backslashes and a line break as
@@ -216,7 +263,9 @@ struct EvaluationStore::Impl {
   std::vector<std::string> metric_columns;  // metric_id - 1 -> column
   std::vector<std::string> taken;           // lower-case names in use
 
-  static constexpr int kRecordParams = 14;  // insert_eval's parameters before the real columns
+  static constexpr int kRecordParams = 15;  // insert_eval's parameters before the real columns
+  std::size_t damaged = 0;    // rows removed at open: they failed their checksum
+  std::size_t unchecked = 0;  // rows recorded before checksums (version 3 or older)
 
   ~Impl() {
     try {
@@ -386,8 +435,8 @@ struct EvaluationStore::Impl {
 
   void prepare_insert() {
     std::string sql = "INSERT INTO evaluation_records(phase, x_hash, x, objectives, inequality, equality, metric_ids, "
-                      "metric_values, ok, message, gradient_probe, seconds, warnings, models";
-    std::string values = "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13,?14";
+                      "metric_values, ok, message, gradient_probe, seconds, warnings, models, record_checksum";
+    std::string values = "VALUES(?1,?2,?3,?4,?5,?6,?7,?8,?9,?10,?11,?12,?13,?14,?15";
     int k = kRecordParams;
     for (const auto* columns : {&variable_columns, &metric_columns}) {
       for (const auto& c : *columns) {
@@ -429,6 +478,56 @@ struct EvaluationStore::Impl {
       run(update.get(), "filling the value columns of an older row");
     }
     if (rc != SQLITE_DONE) fail("reading older rows", rc);
+  }
+
+  // Every row's checksum against its bytes: a row that fails it (a flipped
+  // bit on disk, a hand edit) is deleted, so its design is evaluated again
+  // rather than reused; rows from before checksums are counted, not checked.
+  void verify_checksums() {
+    Stmt rows = prepare((std::string(kChecksumColumns) + "ORDER BY id").c_str());
+    auto bytes = [&rows](int col) {
+      const auto* p = static_cast<const char*>(sqlite3_column_blob(rows.get(), col));
+      return std::string_view(p ? p : "", static_cast<std::size_t>(sqlite3_column_bytes(rows.get(), col)));
+    };
+    std::vector<std::int64_t> bad;
+    int rc;
+    while ((rc = sqlite3_step(rows.get())) == SQLITE_ROW) {
+      if (sqlite3_column_type(rows.get(), 15) == SQLITE_NULL) {
+        ++unchecked;
+        continue;
+      }
+      RowBytes r;
+      r.x_hash = sqlite3_column_int64(rows.get(), 1);
+      r.phase = bytes(2);
+      r.x = bytes(3);
+      r.objectives = bytes(4);
+      r.inequality = bytes(5);
+      r.equality = bytes(6);
+      r.metric_ids = bytes(7);
+      r.metric_values = bytes(8);
+      r.ok = sqlite3_column_int64(rows.get(), 9);
+      r.message = bytes(10);
+      r.gradient_probe = sqlite3_column_int64(rows.get(), 11);
+      r.seconds = sqlite3_column_double(rows.get(), 12);
+      r.warnings = bytes(13);
+      r.models = bytes(14);
+      // A stored value of another type (a hand edit) reads as a number that cannot match.
+      const bool typed = sqlite3_column_type(rows.get(), 1) == SQLITE_INTEGER &&
+                         sqlite3_column_type(rows.get(), 9) == SQLITE_INTEGER &&
+                         sqlite3_column_type(rows.get(), 11) == SQLITE_INTEGER &&
+                         sqlite3_column_type(rows.get(), 12) == SQLITE_FLOAT &&
+                         sqlite3_column_type(rows.get(), 15) == SQLITE_INTEGER;
+      if (!typed || row_checksum(r) != sqlite3_column_int64(rows.get(), 15)) bad.push_back(sqlite3_column_int64(rows.get(), 0));
+    }
+    if (rc != SQLITE_DONE) fail("checking the rows' checksums", rc);
+    rows.reset();
+    Stmt remove = prepare("DELETE FROM evaluation_records WHERE id = ?1");
+    for (const std::int64_t id : bad) {
+      sqlite3_bind_int64(remove.get(), 1, id);
+      run(remove.get(), "removing a row that failed its checksum");
+    }
+    damaged = bad.size();
+    count -= bad.size();
   }
 
   RecordedEvaluation read_row(sqlite3_stmt* s) const {
@@ -550,7 +649,8 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
     exec("ALTER TABLE evaluations RENAME TO evaluation_records", "renaming the records table");
   exec(kCreateSchema, "creating the tables");
   const auto schema = read_meta(kSchemaKey);
-  if (schema && *schema != kSchemaVersion && *schema != kSchemaVersion2 && *schema != kSchemaVersion1) {
+  if (schema && *schema != kSchemaVersion && *schema != kSchemaVersion3 && *schema != kSchemaVersion2 &&
+      *schema != kSchemaVersion1) {
     throw std::runtime_error("'" + path + "' was written by another rackopt version (" + *schema +
                              ", this one reads " + kSchemaVersion +
                              "); delete it or choose another --out folder.");
@@ -564,6 +664,10 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
   // Version 2 had no models column.
   if (scalar("SELECT count(*) FROM pragma_table_info('evaluation_records') WHERE name = 'models'") == 0) {
     exec("ALTER TABLE evaluation_records ADD COLUMN models TEXT NOT NULL DEFAULT ''", "adding the models column");
+  }
+  // Version 3 had no checksums: its rows keep NULL and are reused unchecked.
+  if (scalar("SELECT count(*) FROM pragma_table_info('evaluation_records') WHERE name = 'record_checksum'") == 0) {
+    exec("ALTER TABLE evaluation_records ADD COLUMN record_checksum INTEGER", "adding the checksum column");
   }
   count = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluation_records"));
   if (count > 0) {
@@ -599,6 +703,7 @@ void EvaluationStore::Impl::load_or_create(const std::string& study_fingerprint,
       throw OutputFolderConflict("'" + path + "' records other design variables than this study (same "
                                "fingerprint but different names or order); choose another --out folder.");
     }
+    verify_checksums();
     failed = static_cast<std::size_t>(scalar("SELECT count(*) FROM evaluation_records WHERE ok = 0"));
     if (schema.value_or("") != kSchemaVersion) write_meta(kSchemaKey, kSchemaVersion);  // upgraded above
   } else {
@@ -693,21 +798,40 @@ std::int64_t EvaluationStore::append(const RecordedEvaluation& e) {
     put_le(values, value);
   }
   const std::string x = encode_doubles(e.x);
+  const std::string objectives = encode_doubles(e.objectives), inequality = encode_doubles(e.inequality),
+                    equality = encode_doubles(e.equality), warnings = encode_warnings(e.warnings),
+                    models = join_models(e.models);
+  RowBytes row;
+  row.x_hash = hash_bytes(x);
+  row.phase = e.phase;
+  row.x = x;
+  row.objectives = objectives;
+  row.inequality = inequality;
+  row.equality = equality;
+  row.metric_ids = ids;
+  row.metric_values = values;
+  row.ok = e.ok ? 1 : 0;
+  row.message = e.message;
+  row.gradient_probe = e.gradient_probe ? 1 : 0;
+  row.seconds = e.seconds;
+  row.warnings = warnings;
+  row.models = models;
   sqlite3_stmt* s = m.insert_eval.get();
   m.bind_text(s, 1, e.phase);
-  sqlite3_bind_int64(s, 2, hash_bytes(x));
+  sqlite3_bind_int64(s, 2, row.x_hash);
   m.bind_blob(s, 3, x);
-  m.bind_blob(s, 4, encode_doubles(e.objectives));
-  m.bind_blob(s, 5, encode_doubles(e.inequality));
-  m.bind_blob(s, 6, encode_doubles(e.equality));
+  m.bind_blob(s, 4, objectives);
+  m.bind_blob(s, 5, inequality);
+  m.bind_blob(s, 6, equality);
   m.bind_blob(s, 7, ids);
   m.bind_blob(s, 8, values);
-  sqlite3_bind_int(s, 9, e.ok ? 1 : 0);
+  sqlite3_bind_int(s, 9, static_cast<int>(row.ok));
   m.bind_text(s, 10, e.message);
-  sqlite3_bind_int(s, 11, e.gradient_probe ? 1 : 0);
+  sqlite3_bind_int(s, 11, static_cast<int>(row.gradient_probe));
   sqlite3_bind_double(s, 12, e.seconds);
-  m.bind_text(s, 13, encode_warnings(e.warnings));
-  m.bind_text(s, 14, join_models(e.models));
+  m.bind_text(s, 13, warnings);
+  m.bind_text(s, 14, models);
+  sqlite3_bind_int64(s, 15, row_checksum(row));
   m.bind_real_columns(s, Impl::kRecordParams, e);
   m.run(s, "recording an evaluation");
   const std::int64_t id = sqlite3_last_insert_rowid(m.db);
@@ -746,6 +870,12 @@ std::vector<RecordedEvaluation> EvaluationStore::all() const {
 std::size_t EvaluationStore::size() const { return impl_->count; }
 std::size_t EvaluationStore::failed_count() const { return impl_->failed; }
 std::size_t EvaluationStore::committed_size() const { return impl_->committed; }
+std::size_t EvaluationStore::damaged_rows_removed() const { return impl_->damaged; }
+std::size_t EvaluationStore::unchecked_rows() const { return impl_->unchecked; }
+std::int64_t EvaluationStore::last_id() const {
+  impl_->require_open("EvaluationStore::last_id");
+  return impl_->scalar("SELECT coalesce(max(id), 0) FROM evaluation_records");
+}
 std::size_t EvaluationStore::dimension() const { return impl_->variables.size(); }
 const std::vector<std::string>& EvaluationStore::variable_names() const { return impl_->variables; }
 std::vector<std::string> EvaluationStore::metric_names() const { return impl_->metric_by_id; }

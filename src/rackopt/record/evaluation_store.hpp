@@ -153,6 +153,17 @@ class EvaluationStore {
   std::size_t size() const;            // evaluations recorded (committed or not)
   std::size_t failed_count() const;    // of which !ok
   std::size_t committed_size() const;  // evaluations already durable on disk
+  // Each row carries a checksum of its bytes, written with it. Opening a
+  // store with evaluations (resume) checks every row: one whose bytes no
+  // longer give its checksum (a flipped bit, a hand edit) is deleted, so
+  // find() does not reuse it and the design is evaluated again; this counts
+  // them. Rows recorded before checksums (schema version 3 or older) cannot
+  // be checked: they are kept, and counted by unchecked_rows().
+  std::size_t damaged_rows_removed() const;
+  // The largest id recorded so far (0 for none): rows removed at open leave
+  // gaps, so ids up to it are not all present.
+  std::int64_t last_id() const;
+  std::size_t unchecked_rows() const;
   std::size_t dimension() const;       // variables per x
   const std::vector<std::string>& variable_names() const;
   // Every metric name seen so far, in order of first appearance.

@@ -176,6 +176,19 @@ void set_option(Ipopt::IpoptApplication& app, const std::string& name, const T& 
   if (!ok) throw std::invalid_argument("Ipopt rejected option " + name);
 }
 
+// Why the tracker ended an Ipopt run, in the words of the solver message.
+std::string halt_message(Halt halt) {
+  switch (halt) {
+    case Halt::kBudget: return "budget reached (solver.max_evaluations)";
+    case Halt::kRequests: return "point-request cap reached";
+    case Halt::kTime: return "time limit reached (solver.max_time)";
+    case Halt::kStop: return "stopped";
+    case Halt::kError:
+    case Halt::kNone: break;
+  }
+  return "ended by an error";
+}
+
 }  // namespace
 
 StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& settings, std::vector<double> x_start,
@@ -219,7 +232,13 @@ StartOutcome run_ipopt_start(EvaluationTracker& tracker, const SolverSettings& s
   }
   if (tracker.start_point_failed())
     outcome.message += ": evaluation failed at the start point: " + tracker.start_point_message();
-  if (tracker.halt() != Halt::kNone) outcome.status.reset();
+  if (tracker.halt() != Halt::kNone) {
+    // Our callbacks ended the run (they return false once the tracker halts),
+    // so Ipopt's own status describes that refusal (Invalid_Number_Detected,
+    // User_Requested_Stop, ...), not why the run ended: say why instead.
+    outcome.status.reset();
+    outcome.message = halt_message(tracker.halt());
+  }
   return outcome;
 }
 

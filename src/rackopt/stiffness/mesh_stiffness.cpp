@@ -16,6 +16,7 @@
 #include <Eigen/Dense>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/stiffness/curve_numerics.hpp"
 #include "rackopt/stiffness/loaded_contact.hpp"
 #include "rackopt/stiffness/pair_compliance.hpp"
@@ -854,9 +855,10 @@ StiffnessCurve MeshStiffnessModel::curve(CurveDetail detail, int positions_per_p
   out.warnings = im.warnings;
   out.max_pairs = im.slots;
   const double l = im.span;
-  if (positions_per_period != 0 && (positions_per_period < 4 || positions_per_period > 10000))
-    throw std::invalid_argument("curve: positions_per_period must be 0 (the drive's) or 4 ... 10000, got " +
-                                std::to_string(positions_per_period));
+  if (positions_per_period != 0 && (positions_per_period < kPositionsPerPeriodLimit.lo ||
+                                    positions_per_period > kPositionsPerPeriodLimit.hi))
+    throw std::invalid_argument("curve: positions_per_period must be 0 (the drive's) or " +
+                                range_text(kPositionsPerPeriodLimit) + ", got " + std::to_string(positions_per_period));
   const int N = positions_per_period > 0 ? positions_per_period : im.drive.numerics.positions_per_period;
   const double dX = im.pitch / N;
   LocalCache cache(static_cast<std::size_t>(4 * N + 64));

@@ -44,7 +44,11 @@ void EvaluationLedger::open_store(const std::string& path) {
     store_options.units[metrics::to_string(m)] = std::string(metrics::find_metric(m.name).unit);
   store_.emplace(record::EvaluationStore::open(path, study_fingerprint(spec_), base_.variable_keys(), options_.resume,
                                                store_options));
-  preexisting_rows_ = static_cast<std::int64_t>(store_->size());
+  // Rows of earlier runs have ids up to this one (a row removed for a bad
+  // checksum leaves a gap, so not size()).
+  preexisting_rows_ = store_->last_id();
+  result_.damaged_records = store_->damaged_rows_removed();
+  result_.unchecked_records = store_->unchecked_rows();
   store_->set_meta("status", "running");
   store_->set_meta("kind", kind_name(spec_.kind));
   store_->set_meta("study", spec_.name);

@@ -62,6 +62,9 @@ struct StudyResult {
   std::vector<double> best_history;            // best feasible objective 0 (own sense) after each evaluation
   std::size_t evaluations = 0;                 // model evaluations this study needed (recorded + new)
   std::size_t reused_evaluations = 0;          // of which taken from the store on --resume
+  std::size_t damaged_records = 0;             // recorded rows that failed their checksum on --resume:
+                                               // removed, their designs evaluated again
+  std::size_t unchecked_records = 0;           // recorded rows from before checksums, reused unchecked
   std::size_t failed_evaluations = 0;
   std::string solver_message;
   std::vector<std::string> warnings;           // model warnings, listed once, in the order the designs

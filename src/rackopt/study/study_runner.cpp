@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/study/best_design_curve.hpp"
 #include "rackopt/study/evaluation_ledger.hpp"
 #include "rackopt/study/fe_verification.hpp"
@@ -26,6 +27,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   const auto t0 = Clock::now();
 
   // ---- set-up checks: everything that can be refused before a file is written
+  check_count(options.threads, kThreadsLimit, "threads");
   StudyProblem base(spec);
   if (const auto broken = check_study_kind_rules(spec))
     throw study_error(spec, study_rule_key(*broken, spec), broken->message);

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <set>
 
+#include "rackopt/core/error.hpp"
+
 namespace rackopt::study {
 
 const char* kind_name(StudyKind kind) {
@@ -35,6 +37,12 @@ std::string default_out_dir(const StudySpec& spec) {
     folder += plain ? c : '_';
   }
   if (folder.empty() || folder == "." || folder == "..") folder = "study";
+  if (folder.size() > kMaxFolderNameBytes) {
+    throw InputError(spec.name_mark, "study.name",
+                     "the name is " + std::to_string(folder.size()) + " bytes long; the default output folder "
+                     "out/<name> takes at most " + std::to_string(kMaxFolderNameBytes) +
+                     " (the longest file name): give a shorter name or choose the output folder");
+  }
   return "out/" + folder;
 }
 

@@ -114,6 +114,7 @@ struct OutputSpec {
 
 struct StudySpec {
   std::string name;          // study.name (default: the file stem)
+  SourceMark name_mark;      // where study.name is written (else the study file)
   std::string file;          // study file path as given (for messages)
   std::string description;   // study.description (free text for the report; may be empty)
   StudyKind kind = StudyKind::kEvaluate;
@@ -169,7 +170,11 @@ std::string study_fingerprint(const StudySpec& spec);
 
 // The output folder a study writes to when none is given: out/<name> with
 // every character but letters, digits, '-', '_' and '.' made '_' ("railway
-// sizing" -> "out/railway_sizing"), "out/study" for an empty name.
+// sizing" -> "out/railway_sizing"), "out/study" for an empty name. Throws
+// InputError at study.name when the name is longer than kMaxFolderNameBytes,
+// the longest file name the system takes: a folder name cut short or hashed
+// would be one the user never wrote and could not find, so the user picks.
+inline constexpr std::size_t kMaxFolderNameBytes = 255;
 std::string default_out_dir(const StudySpec& spec);
 
 // The study's problem as a tree, its problem_overrides applied: from

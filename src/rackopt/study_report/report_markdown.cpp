@@ -180,6 +180,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   const std::size_t fresh = fresh_evaluations(result);
   o << "- evaluations: " << result.evaluations << " (" << result.failed_evaluations << " failed, "
     << result.reused_evaluations << " taken from the store on resume)\n";
+  for (const std::string& note : recorded_rows_notes(result)) o << "- " << note << "\n";
   o << "- wall time of this run: " << short_number(result.seconds) << " s";
   if (fresh > 0) o << " (" << short_number(result.seconds * 1000.0 / static_cast<double>(fresh)) << " ms per new evaluation)";
   o << "\n\n";

@@ -19,6 +19,12 @@ std::size_t feasible_points(const StudyResult& r);
 // --resume): the count the per-evaluation time is taken over.
 std::size_t fresh_evaluations(const StudyResult& r);
 
+// What --resume found wrong or could not check in the recorded rows, one
+// sentence each: "3 recorded evaluations failed their checksum and were
+// recomputed", "12 recorded evaluations predate checksums and were reused
+// unchecked"; none when every row checked out.
+std::vector<std::string> recorded_rows_notes(const StudyResult& r);
+
 // The best (pareto: chosen) design's own warnings, then those of
 // `run_warnings` not among them: the optimum's remarks are the ones a
 // reader acts on.

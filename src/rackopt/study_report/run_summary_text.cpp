@@ -6,6 +6,7 @@
 
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
+#include "rackopt/study_report/result_facts.hpp"
 #include "rackopt/study_report/warnings_report.hpp"
 
 namespace rackopt::study_report {
@@ -91,6 +92,7 @@ std::string study_summary_text(const StudySpec& spec, const StudyResult& r, cons
   }
   o << "  evaluations: " << r.evaluations << " (" << r.failed_evaluations << " failed, " << r.reused_evaluations
     << " from the store), " << r.seconds << " s\n";
+  for (const std::string& note : recorded_rows_notes(r)) o << "  " << note << "\n";
   // Model warnings are often one near-copy per design: grouped by kind, the
   // best design's own first; the first few kinds here, all in report.md.
   o << warnings_text(report_warnings(spec, r, rep.warnings), 5);

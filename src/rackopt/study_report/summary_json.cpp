@@ -180,6 +180,8 @@ std::string study_summary_json(const StudySpec& spec, const StudyResult& result,
   j.key("evaluations").value(static_cast<long>(result.evaluations));
   j.key("failed_evaluations").value(static_cast<long>(result.failed_evaluations));
   j.key("reused_evaluations").value(static_cast<long>(result.reused_evaluations));
+  j.key("damaged_records_recomputed").value(static_cast<long>(result.damaged_records));
+  j.key("unchecked_records").value(static_cast<long>(result.unchecked_records));
   j.key("warnings").begin_array();
   for (const auto& w : warnings_best_first(result, warnings.empty() ? result.warnings : warnings)) j.value(w);
   j.end_array();

@@ -3,6 +3,7 @@
 #include <set>
 #include <span>
 
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/core/text.hpp"
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/studyfile/study_section_reader.hpp"
@@ -181,13 +182,14 @@ SectionReader read_metric_options(const SectionReader& top, StudySpec& spec) {
                      "positions_per_period"},
                     "{exact_quantile: on, reliability_samples: 1000}");
   spec.metric_options.exact_quantile = mo.flag("exact_quantile", spec.metric_options.exact_quantile);
-  if (const auto samples = mo.integer("reliability_samples", {1, kMaxReliabilitySamples}))
+  if (const auto samples = mo.integer("reliability_samples", {kSamplesLimit.lo, kSamplesLimit.hi}))
     spec.metric_options.reliability_samples = static_cast<long>(*samples);
   // The study seed drives every random choice, the Monte Carlo included,
   // unless the study pins the Monte Carlo seed itself.
   spec.metric_options.reliability_seed = static_cast<long>(
-      mo.integer("reliability_seed", {0, 2000000000}).value_or(static_cast<long long>(spec.seed % 2000000001ULL)));
-  if (const auto positions = mo.integer("positions_per_period", {4, 10000}))
+      mo.integer("reliability_seed", {kSeedLimit.lo, kSeedLimit.hi})
+          .value_or(static_cast<long long>(spec.seed % static_cast<unsigned long long>(kSeedLimit.hi + 1))));
+  if (const auto positions = mo.integer("positions_per_period", {kPositionsPerPeriodLimit.lo, kPositionsPerPeriodLimit.hi}))
     spec.metric_options.positions_per_period = static_cast<int>(*positions);
   if (const auto replicates = mo.integer("bootstrap_replicates", {statistics::kMinBootstrapReplicates, 100000}))
     spec.metric_options.bootstrap_replicates = static_cast<int>(*replicates);

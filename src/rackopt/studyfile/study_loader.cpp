@@ -67,6 +67,7 @@ StudySpec load_study_text(const std::string& yaml_text, const std::string& name_
   const SectionReader study = study_section(top.get("study"), "study", top.key_mark("study"),
                                             {"name", "kind", "seed", "description"}, "{kind: optimize, seed: 1}");
   spec.name = study.text("name", fs::path(name_for_messages).stem().string());
+  spec.name_mark = study.has("name") ? study.value_mark("name") : SourceMark{name_for_messages, 0, 0};
   spec.description = study.text("description", "");
   const auto kind_text = study.choice("kind", kinds);
   if (!kind_text) study.missing("kind", "one of " + join(kinds, " | "));

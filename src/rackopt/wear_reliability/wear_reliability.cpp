@@ -14,6 +14,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/core/progress_bar.hpp"
+#include "rackopt/core/run_limits.hpp"
 #include "rackopt/wear_reliability/design_scatter.hpp"
 #include "rackopt/wear_reliability/life_scaling.hpp"
 #include "rackopt/wear_reliability/life_at_R_check.hpp"
@@ -138,6 +139,11 @@ WearReliabilityOptions wear_reliability_options(const Drive& drive) {
 
 WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabilityOptions& opt) {
   const SourceMark where{drive.source_file, 0, 0};
+  // The caller's own numbers (a Python call, a library user) get the limits
+  // the loader gives the file's.
+  if (opt.samples) check_count(*opt.samples, kSamplesLimit, "samples");
+  if (opt.seed) check_count(*opt.seed, kSeedLimit, "seed");
+  check_count(opt.threads, kThreadsLimit, "threads");
   if (!(drive.wear.coefficient > 0)) {
     throw InputError(where, "wear.coefficient", "wear is not configured: give wear.coefficient (and wear.hardness, duty)");
   }

@@ -44,9 +44,10 @@ struct SampleLives {
 };
 
 struct WearReliabilityOptions {
-  std::optional<long> samples;  // overrides reliability.samples (>= 1)
-  std::optional<long> seed;     // overrides reliability.seed (>= 0)
-  unsigned threads = 0;     // 0 = hardware concurrency; results do not depend on it
+  // Each checked against core/run_limits.hpp by run_wear_reliability.
+  std::optional<long> samples;  // overrides reliability.samples (kSamplesLimit)
+  std::optional<long> seed;     // overrides reliability.seed (kSeedLimit)
+  unsigned threads = 0;     // 0 = hardware concurrency (kThreadsLimit); results do not depend on it
   ProgressBar* progress = nullptr;  // ticked once per sample
   // Polled before each sample (Ctrl-C): once true the remaining samples are
   // skipped and run_wear_reliability throws rackopt::Interrupted.
