@@ -237,6 +237,54 @@ TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
   expect_store_complete(study, out);
 }
 
+// Starts `rackopt run STUDY ARGS --json --progress --threads 1` into `out`,
+// sends SIGINT once the progress bar has counted `done` evaluations, and
+// checks what every stopped run leaves: exit 130 (not the at-once end), the
+// --json object, and a summary.json and a report.md that say "stopped".
+void interrupt_and_expect_stopped_report(const std::string& study_args, const std::string& dir, long done) {
+  const std::string out = dir + "/run";
+  const pid_t pid = start_cli("run " + study_args + " --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+                              dir + "/e1.txt");
+  EXPECT_GT(pid, 0);
+  const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", done);
+  if (mid_run) kill(pid, SIGINT);
+  const int code = wait_exit(pid);
+  EXPECT_TRUE(mid_run) << "the study ended before it could be interrupted (exit " << code << ")";
+  const std::string err = read_text(dir + "/e1.txt");
+  EXPECT_EQ(code, 130) << err;
+  EXPECT_EQ(err.find("stopped at once"), std::string::npos) << err;
+  const std::string printed = read_text(dir + "/o1.txt");
+  EXPECT_TRUE(nlohmann::json::accept(printed)) << printed << err;
+  if (!nlohmann::json::accept(printed)) return;
+  const auto stopped = nlohmann::json::parse(printed);
+  EXPECT_EQ(stopped["status"], "stopped") << printed;
+  EXPECT_GT(stopped["evaluations"].get<long>(), 0);
+  EXPECT_TRUE(fs::exists(out + "/summary.json"));
+  if (fs::exists(out + "/summary.json")) {
+    EXPECT_EQ(nlohmann::json::parse(read_text(out + "/summary.json"))["status"], "stopped");
+  }
+  EXPECT_TRUE(fs::exists(out + "/report.md"));
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+  EXPECT_NE(err.find("--resume"), std::string::npos) << err;
+}
+
+// Ctrl-C while a design's Monte Carlo life at R runs gives up that
+// evaluation (rackopt::Interrupted from the samples) and must still end in
+// the stopped report. The samples are raised so that the Monte Carlo is
+// nearly all of each evaluation's time: the signal lands inside one.
+TEST(RunCli, CtrlCInsideALifeAtRMonteCarloOfAnOptimizeStudyWritesTheStoppedReport) {
+  const std::string dir = scratch_dir("sigint_life_at_r_optimize");
+  interrupt_and_expect_stopped_report(
+      "studies/gantry_sizing.yaml --set metric_options.reliability_samples=20000 --set output.plots=off", dir, 3);
+}
+
+TEST(RunCli, CtrlCInsideALifeAtRMonteCarloOfAParetoStudyWritesTheStoppedReport) {
+  const std::string dir = scratch_dir("sigint_life_at_r_pareto");
+  interrupt_and_expect_stopped_report(
+      "studies/ship_lift_wear_tradeoff.yaml --set metric_options.reliability_samples=20000 --set output.plots=off",
+      dir, 3);
+}
+
 // The sweep of write_sweep_study from 15 deg with the pressure angle varying
 // slowest: the 22-tooth pinion is undercut at the first four angles (15 to
 // 16.58 deg: z_min = 27.4 down to 22.7 for the railway problem's cutter) and
