@@ -185,12 +185,14 @@ TEST(MpiCli, SigintToRankZeroStopsEveryRankWithTheStoppedReport) {
       "--set output.plots=off";
   const std::string wal = out + "/evaluations.sqlite-wal";
   // Once the store has rows (its write-ahead log is not empty), SIGINT to
-  // the child of mpirun whose environment says it is rank 0.
+  // the child of mpirun whose environment says it is rank 0 (none found:
+  // the job is killed, and the test fails without waiting for the study).
   const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + study +
                         " --json --out " + out + " >" + printed + " & job=$!; " +
                         "for i in $(seq 1200); do [ -s " + wal + " ] && break; sleep 0.05; done; sleep 1; " +
-                        "for p in $(pgrep -P $job); do tr \\0 \\n </proc/$p/environ | grep -qx "
-                        "OMPI_COMM_WORLD_RANK=0 && kill -INT $p; done; wait $job; echo mpirun_exit=$?");
+                        "sent=0; for p in $(pgrep -P $job); do grep -qxz OMPI_COMM_WORLD_RANK=0 /proc/$p/environ && "
+                        "kill -INT $p && sent=1; done; [ $sent = 1 ] || kill -KILL $job; "
+                        "wait $job; echo mpirun_exit=$?");
   EXPECT_NE(m.output.find("mpirun_exit=130"), std::string::npos) << m.output;
   ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
   const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
