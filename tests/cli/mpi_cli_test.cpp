@@ -201,4 +201,25 @@ TEST(MpiCli, SigintToRankZeroStopsEveryRankWithTheStoppedReport) {
   EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
 }
 
+// A SIGINT to mpirun itself: OpenMPI aborts the job (exit status 1, its
+// own), sends every rank SIGTERM a second later and SIGKILL a second after
+// that. The workers leave the stop to rank 0, which writes the whole stopped
+// report in that second (a sweep of 4 ms designs, plots skipped when
+// stopped).
+TEST(MpiCli, SigintToMpirunLeavesTheWholeStoppedReport) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_sigint_mpirun");
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) +
+                        " run studies/spall_severity_sweep.yaml --set sweep.levels=40 --out " + out + " & job=$!; " +
+                        "for i in $(seq 1200); do [ -s " + wal + " ] && break; sleep 0.05; done; sleep 1; " +
+                        "kill -INT $job; wait $job; echo mpirun_exit=$?");
+  EXPECT_NE(m.output.find("mpirun_exit=1\n"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_LT(summary["evaluations"].get<long>(), 6400);
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+}
+
 }  // namespace
