@@ -48,7 +48,10 @@ py::dict run(const std::string& study_text, const std::string& study_name, const
     // request for the length of the call, on the main thread that gets the
     // signals; Python's handlers are back before anything is raised.
     std::optional<EmbeddedStopHandlers> handlers;
-    if (on_main_thread()) handlers.emplace("\nrackopt: stopping after the current evaluation; the report is written, then KeyboardInterrupt\n");
+    if (on_main_thread()) {
+      handlers.emplace(
+          "\nrackopt: stopping after the current evaluation; the report is written, then KeyboardInterrupt\n");
+    }
     py::gil_scoped_release free;
     const FolderLock lock(out);  // held until the report is written
     study::RunOptions opt;

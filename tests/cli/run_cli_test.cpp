@@ -283,8 +283,8 @@ void interrupt_and_expect_stopped_report(const std::string& study_args, const st
 TEST(RunCli, CtrlCInsideALifeAtRMonteCarloOfAnOptimizeStudyWritesTheStoppedReport) {
   const std::string dir = scratch_dir("sigint_life_at_r_optimize");
   interrupt_and_expect_stopped_report(
-      "studies/gantry_sizing.yaml --set metric_options.exact_quantile=off --set metric_options.reliability_samples=2000 "
-      "--set output.plots=off",
+      "studies/gantry_sizing.yaml --set metric_options.exact_quantile=off "
+      "--set metric_options.reliability_samples=2000 --set output.plots=off",
       dir, 1);
 }
 

@@ -10,7 +10,8 @@
 //    (gnuplot), so a hung child cannot keep the program alive.
 //  * A second signal ends the process at once: the registered temporary
 //    files are unlinked, the child group killed, then _exit(kInterruptedExit).
-//    So does the first one inside an ImmediateStopScope.
+//    So does the first one inside an ImmediateStopScope. Neither happens
+//    under EmbeddedStopHandlers (a library call inside another program).
 #pragma once
 
 #include <stdexcept>
