@@ -2,18 +2,17 @@
 // (load and check, take the output folder's lock, run with the evaluation
 // store, write the report), returning summary.json as a dict. The GIL is
 // released while the study runs; Ctrl-C stops it cleanly (the results so
-// far are written, like the command line's first Ctrl-C) and then raises
-// KeyboardInterrupt.
+// far are written, like the command line's first Ctrl-C; a second one does
+// not end the interpreter) and then raises KeyboardInterrupt.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <atomic>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "python_bindings.hpp"
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/run_limits.hpp"
 #include "rackopt/marked_yaml/input_file.hpp"
 #include "rackopt/output/folder_lock.hpp"
@@ -27,24 +26,11 @@ namespace py = pybind11;
 namespace rackopt::python {
 namespace {
 
-// Polled by the runner between evaluations, also from worker threads. Only
-// the interpreter's main thread can run Python's signal handlers: it does,
-// under the GIL, and records a KeyboardInterrupt (left pending in its thread
-// state, raised when the study returns); the others read the flag.
-class PythonStop {
- public:
-  bool operator()() {
-    if (stopped_.load()) return true;
-    if (std::this_thread::get_id() != main_) return false;
-    py::gil_scoped_acquire hold;
-    if (PyErr_CheckSignals() != 0) stopped_.store(true);
-    return stopped_.load();
-  }
-
- private:
-  std::thread::id main_ = std::this_thread::get_id();
-  std::atomic<bool> stopped_{false};
-};
+// True on the interpreter's main thread, the one that gets the signals.
+bool on_main_thread() {
+  const py::module_ threading = py::module_::import("threading");
+  return threading.attr("current_thread")().is(threading.attr("main_thread")());
+}
 
 // `text` with every `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -73,8 +59,18 @@ py::dict run(const std::string& study_text, const std::string& study_name, const
   const std::string out = out_dir.empty() ? study::default_out_dir(spec) : out_dir;
 
   std::string summary;
-  auto stop = std::make_shared<PythonStop>();
+  bool interrupted = false;
   {
+    // While the study runs without the GIL the interpreter's own SIGINT
+    // handler cannot run, and the models poll rackopt's stop request, not
+    // Python's: rackopt's handler turns Ctrl-C (and SIGTERM) into that
+    // request for the length of the call, on the main thread that gets the
+    // signals; Python's handlers are back before anything is raised.
+    std::optional<EmbeddedStopHandlers> handlers;
+    if (on_main_thread()) {
+      handlers.emplace(
+          "\nrackopt: stopping after the current evaluation; the report is written, then KeyboardInterrupt\n");
+    }
     py::gil_scoped_release free;
     try {
       const FolderLock lock(out);  // held until the report is written
@@ -82,16 +78,28 @@ py::dict run(const std::string& study_text, const std::string& study_name, const
       opt.out_dir = out;
       opt.resume = resume;
       opt.threads = static_cast<unsigned>(threads);
-      opt.stop = [stop] { return (*stop)(); };
-      const study::StudyResult result = study::run_study(spec, opt);
-      summary = study_report::write_study_report(spec, result, out).summary_json;
+      opt.stop = [] { return stop_requested(); };
+      try {
+        const study::StudyResult result = study::run_study(spec, opt);
+        summary = study_report::write_study_report(spec, result, out).summary_json;
+      } catch (const Interrupted&) {
+        // Work that gave up on the stop request outside the study's own
+        // handling: nothing partial was published; KeyboardInterrupt all the same.
+        if (!handlers) throw;
+      }
     } catch (const record::OutputFolderConflict& e) {
       throw record::OutputFolderConflict(in_python_words(e.what()));
     } catch (const OutputFolderInUse& e) {
       throw OutputFolderInUse(in_python_words(e.what()));
     }
+    interrupted = handlers && stop_requested();
   }
-  if (PyErr_Occurred()) throw py::error_already_set();  // Ctrl-C: the report is written, now raise
+  if (interrupted) {
+    // Ctrl-C: the report is written (a stopped study, or a finished one
+    // when the signal came after the last evaluation); now raise.
+    PyErr_SetNone(PyExc_KeyboardInterrupt);
+    throw py::error_already_set();
+  }
   py::dict d = py::module_::import("json").attr("loads")(summary);
   d["out_dir"] = out;
   return d;

@@ -90,3 +90,98 @@ rackopt.run_study(study, problem={small_problem!r}, out={str(tmp_path / "long")!
     assert proc.returncode != 0 and "KeyboardInterrupt" in err
     summary = json.loads((tmp_path / "long" / "summary.json").read_text())
     assert summary["status"] == "stopped" and 0 < summary["evaluations"] < 60000
+
+
+def _wait_for_the_first_evaluation(wal, proc, quiet=0.3, seconds=120):
+    """Waits until the store's write-ahead log grows again after its set-up:
+    the first growth that follows `quiet` seconds without one is the first
+    evaluation's commit (the store holds the database locked, so it cannot
+    be read while the study runs). Returns early when the process ended."""
+    import time
+
+    size, changed = 0, time.monotonic()
+    deadline = changed + seconds
+    while proc.poll() is None and time.monotonic() < deadline:
+        now_size = wal.stat().st_size if wal.exists() else 0
+        if now_size != size:
+            if size > 32 and time.monotonic() - changed >= quiet:
+                return
+            size, changed = now_size, time.monotonic()
+        time.sleep(0.01)
+
+
+def test_ctrl_c_inside_the_last_batch_of_a_long_study_stops_it_reports_and_raises(source, tmp_path):
+    """Ctrl-C while the study's last batch runs (one sweep chunk of designs
+    whose Monte Carlo life at R takes over a second each, about 12 s in all):
+    nothing polls between batches any more, so only the models' own stop
+    request can end it. The study stops, its report says so, KeyboardInterrupt
+    is raised, and resume=True finishes it with what was recorded."""
+    import os
+    import signal
+    import sys
+    import time
+
+    out = tmp_path / "life"
+    study = {"study": {"name": "long life at R", "kind": "sweep", "seed": 1},
+             "problem": str(source / "problems" / "gantry_axis.yaml"),
+             "variables": {"pinion.face_width": {"lower": "30 mm", "upper": "60 mm"}},
+             "objectives": [{"metric": "wear_life_at_R(0.9)", "sense": "maximize"}],
+             "metric_options": {"exact_quantile": "off", "reliability_samples": 3000},
+             "sweep": {"method": "grid", "levels": 8},
+             "output": {"plots": "off", "stiffness_curve": "off"}}
+    script = f"""
+import rackopt, sys
+try:
+    rackopt.run_study({study!r}, out={str(out)!r}, threads=1)
+except KeyboardInterrupt:
+    print("KeyboardInterrupt", flush=True)
+    sys.exit(130)
+print("returned", flush=True)
+"""
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env=os.environ.copy())
+    # The start design (the objective's scale) is recorded first; the eight
+    # sweep designs then run as one batch.
+    _wait_for_the_first_evaluation(out / "evaluations.sqlite-wal", proc)
+    assert proc.poll() is None, "the study ended before it could be interrupted"
+    proc.send_signal(signal.SIGINT)
+    printed, err = proc.communicate(timeout=120)
+    assert printed.strip() == "KeyboardInterrupt", (printed, err)
+    assert proc.returncode == 130, err
+    summary = json.loads((out / "summary.json").read_text())
+    # Stopped inside the batch: only the start design is recorded.
+    assert summary["status"] == "stopped" and 1 <= summary["evaluations"] < 9
+    assert "stopped" in (out / "report.md").read_text()
+
+    resumed = rackopt.run_study(study, out=out, threads=2, resume=True)
+    assert resumed["status"] == "ok" and resumed["evaluations"] == 9
+    assert resumed["reused_evaluations"] == summary["evaluations"]
+
+
+def test_a_fifo_is_refused_at_once(tmp_path):
+    """A FIFO as the problem or study file: InputError naming it, without
+    waiting for a writer (run in a child with a time limit, so that a
+    regression fails instead of hanging)."""
+    import os
+    import sys
+
+    fifo = tmp_path / "input.yaml"
+    os.mkfifo(fifo)
+    script = f"""
+import rackopt
+for call in (rackopt.load_problem, rackopt.run_study):
+    try:
+        call({str(fifo)!r})
+        print("read", flush=True)
+    except rackopt.InputError as e:
+        print(e.file, "|", e.message, flush=True)
+"""
+    try:
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60,
+                             env=os.environ.copy())
+    except subprocess.TimeoutExpired:
+        pytest.fail("waited on the FIFO")
+    lines = run.stdout.splitlines()
+    assert len(lines) == 2, (run.stdout, run.stderr)
+    for line in lines:
+        assert line.startswith(str(fifo) + " |") and "FIFO (named pipe), not a regular file" in line, line

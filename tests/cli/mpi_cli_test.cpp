@@ -2,6 +2,8 @@
 // and a rank that cannot start is named. Skipped when the build has no MPI.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cstdlib>
 #include <regex>
@@ -168,6 +170,56 @@ TEST(MpiCli, AKilledRunResumesWithNothingRepeatedAndNothingLost) {
   EXPECT_GT(reused, 0);
   EXPECT_LT(reused, total);
   EXPECT_EQ(record_rows(serial), record_rows(ranks));
+}
+
+// Rank 0 owns the stop: SIGINT to rank 0 (what a Ctrl-C is to `rackopt run`
+// alone) while a design's Monte Carlo life at R runs on the ranks. Every
+// rank stops, rank 0 writes the whole stopped report, and mpirun ends with
+// rank 0's exit status, 130. (A SIGINT to mpirun itself is OpenMPI's:
+// docs/output.md, "Ctrl-C and SIGTERM".)
+TEST(MpiCli, SigintToRankZeroStopsEveryRankWithTheStoppedReport) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_sigint"), printed = scratch_dir("mpi_sigint_json") + "/stdout.json";
+  const std::string study =
+      "studies/gantry_sizing.yaml --set metric_options.exact_quantile=off --set metric_options.reliability_samples=2000 "
+      "--set output.plots=off";
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  // Once the store has rows (its write-ahead log is not empty), SIGINT to
+  // the child of mpirun whose environment says it is rank 0 (none found:
+  // the job is killed, and the test fails without waiting for the study).
+  const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) + " run " + study +
+                        " --json --out " + out + " >" + printed + " & job=$!; " +
+                        "for i in $(seq 1200); do [ -s " + wal + " ] && break; sleep 0.05; done; sleep 1; " +
+                        "sent=0; for p in $(pgrep -P $job); do grep -qxz OMPI_COMM_WORLD_RANK=0 /proc/$p/environ && "
+                        "kill -INT $p && sent=1; done; [ $sent = 1 ] || kill -KILL $job; "
+                        "wait $job; echo mpirun_exit=$?");
+  EXPECT_NE(m.output.find("mpirun_exit=130"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_EQ(nlohmann::json::parse(read_text(printed)), summary);
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+}
+
+// A SIGINT to mpirun itself: OpenMPI aborts the job (exit status 1, its
+// own), sends every rank SIGTERM a second later and SIGKILL a second after
+// that. The workers leave the stop to rank 0, which writes the whole stopped
+// report in that second (a sweep of 4 ms designs, plots skipped when
+// stopped).
+TEST(MpiCli, SigintToMpirunLeavesTheWholeStoppedReport) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_sigint_mpirun");
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) +
+                        " run studies/spall_severity_sweep.yaml --set sweep.levels=40 --out " + out + " & job=$!; " +
+                        "for i in $(seq 1200); do [ -s " + wal + " ] && break; sleep 0.05; done; sleep 1; " +
+                        "kill -INT $job; wait $job; echo mpirun_exit=$?");
+  EXPECT_NE(m.output.find("mpirun_exit=1\n"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_LT(summary["evaluations"].get<long>(), 6400);
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
 }
 
 }  // namespace

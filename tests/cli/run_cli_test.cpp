@@ -36,7 +36,9 @@ using rackopt::test_support::scratch_dir;
 using rackopt::test_support::start_cli;
 using rackopt::test_support::wait_exit;
 
-// Largest "N/M evaluations" count the progress bar has drawn so far.
+// Largest evaluation count the progress bar has drawn so far: N of "N/M
+// evaluations" (a planned number) or of "N evaluations (budget M)" (optimize
+// and pareto).
 long progress_done(const std::string& err_file) {
   // (no std::regex: GCC 12 warns inside it under the sanitizer build)
   const std::string text = read_text(err_file);
@@ -44,7 +46,12 @@ long progress_done(const std::string& err_file) {
   for (std::size_t at = text.find(" evaluations"); at != std::string::npos; at = text.find(" evaluations", at + 1)) {
     std::size_t slash = at;
     while (slash > 0 && std::isdigit(static_cast<unsigned char>(text[slash - 1]))) --slash;
-    if (slash == at || slash == 0 || text[--slash] != '/') continue;  // not "N/M evaluations"
+    if (slash == at) continue;
+    if (text.compare(at, 21, " evaluations (budget ") == 0) {
+      best = std::max(best, std::stol(text.substr(slash, at - slash)));
+      continue;
+    }
+    if (slash == 0 || text[--slash] != '/') continue;  // not "N/M evaluations"
     std::size_t begin = slash;
     while (begin > 0 && std::isdigit(static_cast<unsigned char>(text[begin - 1]))) --begin;
     if (begin < slash) best = std::max(best, std::stol(text.substr(begin, slash - begin)));
@@ -237,6 +244,58 @@ TEST(RunCli, CtrlCStopsCleanlyWritesResultsAndResumeFinishes) {
   // Everything the stopped run recorded was committed (a clean stop flushes).
   EXPECT_EQ(j["reused_evaluations"], stopped["evaluations"]);
   expect_store_complete(study, out);
+}
+
+// Starts `rackopt run STUDY ARGS --json --progress --threads 1` into `out`,
+// sends SIGINT once the progress bar has counted `done` evaluations, and
+// checks what every stopped run leaves: exit 130 (not the at-once end), the
+// --json object, and a summary.json and a report.md that say "stopped".
+void interrupt_and_expect_stopped_report(const std::string& study_args, const std::string& dir, long done) {
+  const std::string out = dir + "/run";
+  const pid_t pid = start_cli("run " + study_args + " --json --progress --threads 1 --out " + out, dir + "/o1.txt",
+                              dir + "/e1.txt");
+  EXPECT_GT(pid, 0);
+  const bool mid_run = wait_for_progress(pid, dir + "/e1.txt", done);
+  if (mid_run) kill(pid, SIGINT);
+  const int code = wait_exit(pid);
+  EXPECT_TRUE(mid_run) << "the study ended before it could be interrupted (exit " << code << ")";
+  const std::string err = read_text(dir + "/e1.txt");
+  EXPECT_EQ(code, 130) << err;
+  EXPECT_EQ(err.find("stopped at once"), std::string::npos) << err;
+  const std::string printed = read_text(dir + "/o1.txt");
+  EXPECT_TRUE(nlohmann::json::accept(printed)) << printed << err;
+  if (!nlohmann::json::accept(printed)) return;
+  const auto stopped = nlohmann::json::parse(printed);
+  EXPECT_EQ(stopped["status"], "stopped") << printed;
+  EXPECT_GT(stopped["evaluations"].get<long>(), 0);
+  EXPECT_TRUE(fs::exists(out + "/summary.json"));
+  if (fs::exists(out + "/summary.json")) {
+    EXPECT_EQ(nlohmann::json::parse(read_text(out + "/summary.json"))["status"], "stopped");
+  }
+  EXPECT_TRUE(fs::exists(out + "/report.md"));
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+  EXPECT_NE(err.find("--resume"), std::string::npos) << err;
+}
+
+// Ctrl-C while a design's Monte Carlo life at R runs gives up that
+// evaluation (rackopt::Interrupted from the samples) and must still end in
+// the stopped report. The gantry's one random input is sampled (not its
+// exact quantile) with many samples, so that the Monte Carlo is nearly all
+// of each evaluation's time: the signal lands inside one.
+TEST(RunCli, CtrlCInsideALifeAtRMonteCarloOfAnOptimizeStudyWritesTheStoppedReport) {
+  const std::string dir = scratch_dir("sigint_life_at_r_optimize");
+  interrupt_and_expect_stopped_report(
+      "studies/gantry_sizing.yaml --set metric_options.exact_quantile=off "
+      "--set metric_options.reliability_samples=2000 --set output.plots=off",
+      dir, 1);
+}
+
+TEST(RunCli, CtrlCInsideALifeAtRMonteCarloOfAParetoStudyWritesTheStoppedReport) {
+  const std::string dir = scratch_dir("sigint_life_at_r_pareto");
+  interrupt_and_expect_stopped_report(
+      "studies/ship_lift_wear_tradeoff.yaml --set metric_options.exact_quantile=off "
+      "--set metric_options.reliability_samples=2000 --set output.plots=off",
+      dir, 3);
 }
 
 // The sweep of write_sweep_study from 15 deg with the pressure angle varying

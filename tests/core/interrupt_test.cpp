@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -64,6 +65,33 @@ TEST(Interrupt, TheHandlerKillsTheRegisteredChildGroup) {
     int status = 0;
     waitpid(child, &status, 0);
     _exit(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL ? 0 : 7);
+  }
+  EXPECT_EQ(child_exit(pid), 0);
+}
+
+// Embedded (Python's run_study): every signal only asks to stop, even a
+// second one and one inside an ImmediateStopScope (the interpreter owns the
+// process); the handler found before is back afterwards and the request is
+// cleared.
+std::atomic<int> g_embedding_program_signals{0};
+extern "C" void embedding_program_handler(int) { g_embedding_program_signals.fetch_add(1); }
+
+TEST(Interrupt, EmbeddedHandlersOnlyAskToStopAndGiveTheOldHandlerBack) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    ::signal(SIGINT, embedding_program_handler);
+    {
+      const EmbeddedStopHandlers handlers;
+      const ImmediateStopScope immediate;
+      raise(SIGINT);
+      raise(SIGTERM);
+      raise(SIGINT);
+      if (!stop_requested() || stop_signal() != SIGINT) _exit(3);
+      if (g_embedding_program_signals.load() != 0) _exit(4);
+    }
+    if (stop_requested()) _exit(5);
+    raise(SIGINT);  // the embedding program's own handler again
+    _exit(g_embedding_program_signals.load() == 1 ? 0 : 6);
   }
   EXPECT_EQ(child_exit(pid), 0);
 }

@@ -4,13 +4,19 @@
 // that says what is wrong (docs/input_limits.md).
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "problem_test_support.hpp"
@@ -190,11 +196,42 @@ TEST(InputSize, FileOverTheLimitIsRefusedReadingBounded) {
   EXPECT_TRUE(contains(e.message(), "larger than " + std::to_string(kMaxInputBytes) + " bytes")) << e.what();
 }
 
-TEST(InputSize, EndlessDeviceIsReadBounded) {
+TEST(InputSize, EndlessDeviceIsRefusedUnread) {
   const AddressSpaceCeiling ceiling(512u << 20);
   if (!std::filesystem::exists("/dev/zero")) GTEST_SKIP() << "no /dev/zero";
   const InputError e = input_error([] { read_input_file("/dev/zero", "problem file"); });
-  EXPECT_TRUE(contains(e.message(), "larger than")) << e.what();
+  EXPECT_EQ(e.mark().file, "/dev/zero");
+  EXPECT_TRUE(contains(e.message(), "is a character device, not a regular file")) << e.what();
+}
+
+// A FIFO without a writer blocks a plain open() for ever. The read runs on
+// a thread; should it still wait after 10 s, the test opens the FIFO's
+// write end and closes it (the reader then sees an empty file), so that a
+// regression fails instead of hanging.
+TEST(InputSize, FifoIsRefusedWithoutWaitingForAWriter) {
+  const std::string path = test_support::scratch_dir("hostile") + "/problem.fifo";
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  std::promise<std::string> answer;
+  std::future<std::string> got = answer.get_future();
+  std::thread reader([&] {
+    try {
+      read_input_file(path, "problem file");
+      answer.set_value("read without an error");
+    } catch (const InputError& e) {
+      answer.set_value(e.what());
+    }
+  });
+  const bool in_time = got.wait_for(std::chrono::seconds(10)) == std::future_status::ready;
+  if (!in_time) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd >= 0) ::close(fd);
+  }
+  reader.join();
+  const std::string message = got.get();
+  std::filesystem::remove(path);
+  EXPECT_TRUE(in_time) << "read_input_file waited on the FIFO";
+  EXPECT_TRUE(contains(message, path)) << message;
+  EXPECT_TRUE(contains(message, "is a FIFO (named pipe), not a regular file")) << message;
 }
 
 TEST(InputSize, DirectoryIsNamedAsADirectory) {

@@ -48,3 +48,13 @@ foreach(_i RANGE 0 ${_last} 2)
     set_tests_properties("${_name}" PROPERTIES LABELS long_fe TIMEOUT ${_limit})
   endif()
 endforeach()
+# A FIFO given as an input must be refused at once; should a change make
+# rackopt wait on it again, these end at their limit instead of holding CI
+# (each also kills a run still going after 20 s itself).
+foreach(_t NonRegularInput.AFifoAsTheProblemFileIsRefusedByEveryCommand
+           NonRegularInput.AFifoAsTheStudyFileIsRefusedAndNothingIsWritten
+           NonRegularInput.AFifoAsTheProblemAStudyNamesIsRefused
+           NonRegularInput.ACharacterDeviceIsRefusedNamingItsKind
+           InputSize.FifoIsRefusedWithoutWaitingForAWriter)
+  set_tests_properties("${_t}" PROPERTIES TIMEOUT 90)
+endforeach()

@@ -27,6 +27,7 @@ char g_slot_path[kSlots][kPathMax];
 char g_notice[512];
 std::size_t g_notice_len = 0;
 std::atomic<int> g_immediate{0};
+std::atomic<bool> g_embedded{false};  // EmbeddedStopHandlers: never end at once
 char g_output[1024];
 std::atomic<std::size_t> g_output_len{0};
 std::size_t g_output_split = 0;  // where the signal's name goes
@@ -45,7 +46,7 @@ extern "C" void on_stop_signal(int sig) {
   g_stop.store(true);
   const pid_t child = g_child_group.load();
   if (child > 0) ::kill(-child, SIGKILL);
-  if (earlier >= 1 || g_immediate.load() > 0) {
+  if (!g_embedded.load() && (earlier >= 1 || g_immediate.load() > 0)) {
     for (int i = 0; i < kSlots; ++i) {
       if (g_slot_state[i].load() == 2) ::unlink(g_slot_path[i]);
     }
@@ -69,9 +70,9 @@ extern "C" void on_stop_signal(int sig) {
   if (g_notice_len > 0) say(g_notice, g_notice_len);
 }
 
-}  // namespace
-
-void install_interrupt_handlers(const std::string& notice) {
+// Installs on_stop_signal for SIGINT and SIGTERM; the earlier handlers go
+// to `saved` ([0] SIGINT, [1] SIGTERM) when not null.
+void install_handlers(const std::string& notice, struct sigaction* saved) {
   const std::size_t n = std::min(notice.size(), sizeof g_notice - 1);
   std::memcpy(g_notice, notice.data(), n);
   g_notice_len = n;
@@ -80,8 +81,24 @@ void install_interrupt_handlers(const std::string& notice) {
   sa.sa_handler = on_stop_signal;
   sigemptyset(&sa.sa_mask);
   sa.sa_flags = SA_RESTART;
-  ::sigaction(SIGINT, &sa, nullptr);
-  ::sigaction(SIGTERM, &sa, nullptr);
+  ::sigaction(SIGINT, &sa, saved ? &saved[0] : nullptr);
+  ::sigaction(SIGTERM, &sa, saved ? &saved[1] : nullptr);
+}
+
+}  // namespace
+
+void install_interrupt_handlers(const std::string& notice) { install_handlers(notice, nullptr); }
+
+EmbeddedStopHandlers::EmbeddedStopHandlers(const std::string& notice) {
+  g_embedded.store(true);
+  install_handlers(notice, saved_);
+}
+
+EmbeddedStopHandlers::~EmbeddedStopHandlers() {
+  ::sigaction(SIGINT, &saved_[0], nullptr);
+  ::sigaction(SIGTERM, &saved_[1], nullptr);
+  clear_stop_request();
+  g_embedded.store(false);
 }
 
 bool stop_requested() { return g_stop.load(std::memory_order_relaxed); }

@@ -10,12 +10,14 @@
 //    (gnuplot), so a hung child cannot keep the program alive.
 //  * A second signal ends the process at once: the registered temporary
 //    files are unlinked, the child group killed, then _exit(kInterruptedExit).
-//    So does the first one inside an ImmediateStopScope.
+//    So does the first one inside an ImmediateStopScope. Neither happens
+//    under EmbeddedStopHandlers (a library call inside another program).
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
+#include <signal.h>
 #include <sys/types.h>
 
 namespace rackopt {
@@ -52,6 +54,26 @@ void throw_if_stop_requested(const std::string& what);
 // The process group the handler kills on a signal (a child started in its
 // own group: pgid = its pid); 0 = none. One at a time.
 void set_child_process_group(pid_t pgid);
+
+// rackopt's SIGINT/SIGTERM handler for the life of the object, inside a
+// program that owns the process and its own handlers (the Python module's
+// run_study, whose interpreter's handler cannot run while the call holds no
+// GIL): clears the stop request, then every signal only sets it (and kills
+// the registered child's group), never ending the process at once, not even
+// in an ImmediateStopScope. On the way out the stop request is cleared (so
+// that later calls of the embedding program run) and the handlers found
+// are put back: read stop_requested() before. Make it on the thread that
+// gets the signals (the main thread); one at a time.
+class EmbeddedStopHandlers {
+ public:
+  explicit EmbeddedStopHandlers(const std::string& notice = "");
+  ~EmbeddedStopHandlers();
+  EmbeddedStopHandlers(const EmbeddedStopHandlers&) = delete;
+  EmbeddedStopHandlers& operator=(const EmbeddedStopHandlers&) = delete;
+
+ private:
+  struct sigaction saved_[2] = {};  // the handlers found: SIGINT's, SIGTERM's
+};
 
 // While one of these lives, the first signal already ends the process at
 // once (as a second one does): for long computations that cannot poll the

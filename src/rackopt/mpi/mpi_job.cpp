@@ -2,7 +2,9 @@
 
 #include <mpi.h>
 
+#include <csignal>
 #include <cstdint>
+#include <exception>
 #include <cstdlib>
 #include <iterator>
 #include <span>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/parallel_for.hpp"
 #include "rackopt/study/design_wire.hpp"
 #include "rackopt/study/reliability_options.hpp"
@@ -104,8 +107,16 @@ class MpiExecutor final : public study::DesignExecutor {
     std::string payload = study::encode_designs(xs);
     broadcast(command, payload);
     const std::vector<std::size_t> mine = share_of(xs.size(), 0, job_.size());
-    std::vector<study::DesignMetrics> own = compute_share(problem, xs, mine, threads_);
-    for (std::size_t j = 0; j < mine.size(); ++j) out[mine[j]] = problem.to_evaluation(std::move(own[j]));
+    // Ctrl-C inside rank 0's share (a Monte Carlo that gave up) ends the
+    // batch, but only once every worker's results are in: the next command
+    // (the stop) must find no message left over.
+    std::exception_ptr interrupted;
+    try {
+      std::vector<study::DesignMetrics> own = compute_share(problem, xs, mine, threads_);
+      for (std::size_t j = 0; j < mine.size(); ++j) out[mine[j]] = problem.to_evaluation(std::move(own[j]));
+    } catch (const Interrupted&) {
+      interrupted = std::current_exception();
+    }
     for (int r = 1; r < job_.size(); ++r) {
       const std::vector<std::size_t> theirs = share_of(xs.size(), r, job_.size());
       std::vector<study::DesignMetrics> got = study::decode_metrics(receive_bytes(r, kResultTag));
@@ -114,6 +125,7 @@ class MpiExecutor final : public study::DesignExecutor {
                                  " designs for " + std::to_string(theirs.size()));
       for (std::size_t j = 0; j < theirs.size(); ++j) out[theirs[j]] = problem.to_evaluation(std::move(got[j]));
     }
+    if (interrupted) std::rethrow_exception(interrupted);
     return out;
   }
   // The samples in contiguous shares, rank r the r-th; rank 0 computes its
@@ -128,6 +140,8 @@ class MpiExecutor final : public study::DesignExecutor {
       std::string payload = study::encode_designs({design, {static_cast<double>(n)}});
       broadcast(command, payload);
       const auto [first, last] = sample_share(n, 0, job_.size());
+      // Rank 0's own share stops early on Ctrl-C (its skipped samples are
+      // thrown away by the analysis); the workers' shares are read all the same.
       SampleLives all = here(first, last);
       std::string failure;
       for (int r = 1; r < job_.size(); ++r) {
@@ -220,6 +234,12 @@ void MpiJob::stop_workers() {
 }
 
 int MpiJob::serve(const study::StudyProblem* problem, const std::string& why_not, unsigned threads) {
+  // Rank 0 owns the stop: mpirun sends SIGTERM to every rank when it is
+  // interrupted, and a worker that died of it would take rank 0 down before
+  // its stopped report is written. A worker finishes the batch it has and
+  // ends on rank 0's stop command.
+  ::signal(SIGINT, SIG_IGN);
+  ::signal(SIGTERM, SIG_IGN);
   send_bytes(problem ? std::string() : (why_not.empty() ? std::string("no study to serve") : why_not), 0, kReadyTag);
   const unsigned pool = resolve_threads(threads);
   for (;;) {

@@ -1,5 +1,6 @@
 #include "rackopt/study/combination_runs.hpp"
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
 
 namespace rackopt::study {
@@ -21,13 +22,21 @@ CombinationRuns::CombinationRuns(EvaluationLedger& ledger, const StudyProblem& b
 }
 
 void CombinationRuns::run(const std::function<void(std::size_t, const solvers::Problem&)>& run) {
-  solvers::run_in_lockstep(
-      views_.size(), kCombinationRunsAtOnce,
-      [&](std::size_t c, solvers::LockstepChannel& channel) {
-        const solvers::LockstepProblem problem(views_[c], channel);
-        run(c, problem);
-      },
-      [&](const std::vector<solvers::LockstepRequest>& round) { return serve(round); });
+  try {
+    solvers::run_in_lockstep(
+        views_.size(), kCombinationRunsAtOnce,
+        [&](std::size_t c, solvers::LockstepChannel& channel) {
+          const solvers::LockstepProblem problem(views_[c], channel);
+          run(c, problem);
+        },
+        [&](const std::vector<solvers::LockstepRequest>& round) { return serve(round); });
+  } catch (const Interrupted&) {
+    // Ctrl-C inside an evaluation (a Monte Carlo life at R): that batch is
+    // abandoned (--resume evaluates it again); what the runs had evaluated
+    // before it is recorded, and the study ends as stopped with its report.
+    ledger_.mark_stopped();
+    for (const auto& r : recorded_) r->settle_pending();
+  }
 }
 
 std::vector<std::vector<solvers::Evaluation>> CombinationRuns::serve(const std::vector<solvers::LockstepRequest>& round) {

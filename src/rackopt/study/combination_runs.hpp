@@ -42,8 +42,10 @@ class CombinationRuns {
   // Runs `run(c, problem)` for every combination in lockstep; `problem` is
   // what the run's solver evaluates (recorded through run c's
   // RecordedProblem; the run reports its solver's observations to
-  // recorded(c) and settles it when done). Rethrows what a run or the
-  // ledger threw.
+  // recorded(c) and settles it when done). An evaluation that gave up on
+  // Ctrl-C (rackopt::Interrupted) ends every run: what the runs had
+  // evaluated is recorded, the ledger is marked stopped and this returns.
+  // Rethrows anything else a run or the ledger threw.
   void run(const std::function<void(std::size_t, const solvers::Problem&)>& run);
 
  private:

@@ -64,6 +64,10 @@ class EvaluationLedger {
 
   // Latched: once the user asked to stop, every later poll says so.
   bool stop_requested();
+  // Latches the stop: an evaluation gave up part-way (rackopt::Interrupted,
+  // a Monte Carlo that noticed Ctrl-C); nothing of it is recorded and the
+  // study ends as stopped, its report written.
+  void mark_stopped() { stopped_ = true; }
   bool stopped() const { return stopped_; }
 
   // x from the store, counted as reused at its first use in this run

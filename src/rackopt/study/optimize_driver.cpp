@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/study/combination_runs.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
 #include "rackopt/study/recorded_problem.hpp"
@@ -98,7 +99,16 @@ StudyStatus drive_optimize(const KindDriverContext& ctx) {
       result.per_combination.push_back(std::move(co));
     }
   }
-  if (result.best && !ledger.stopped()) result.explanation = explain_optimum(base, result.best->x, ledger.threads());
+  if (result.best && !ledger.stopped()) {
+    try {
+      result.explanation = explain_optimum(base, result.best->x, ledger.threads());
+    } catch (const Interrupted&) {
+      // Ctrl-C while the optimum's neighbours were evaluated: every design
+      // is recorded; the report says stopped, without the explanation.
+      ledger.mark_stopped();
+      status = StudyStatus::kStopped;
+    }
+  }
   return status;
 }
 

@@ -2,6 +2,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/text.hpp"
 #include "rackopt/solvers/front_selection.hpp"
 #include "rackopt/solvers/pareto.hpp"
@@ -115,8 +116,17 @@ StudyStatus drive_pareto(const KindDriverContext& ctx) {
       const std::vector<double> x = p.to_design(fp.x);
       const std::string label = phase.empty() ? fp.label : phase + ": " + fp.label;
       std::optional<DesignEvaluation> o = ledger.recorded(x);
-      const DesignEvaluation d = o ? *o : p.evaluate_design(x, ledger.threads());
-      DesignResult r = ledger.to_result(d, label);
+      if (!o) {
+        try {
+          o = p.evaluate_design(x, ledger.threads());
+        } catch (const Interrupted&) {
+          // Ctrl-C inside its Monte Carlo: the point is left out of the
+          // stopped study's front (--resume finds it again).
+          ledger.mark_stopped();
+          continue;
+        }
+      }
+      DesignResult r = ledger.to_result(*o, label);
       if (r.feasible) {
         candidates.push_back(std::move(r));
         candidate_run.push_back(c);

@@ -84,14 +84,12 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
     // fresh evaluation give the same scales.
     start = ledger.lookup(x);
     try {
-      // One evaluation, nothing of it recorded before it ends: Ctrl-C ends
-      // a long one (a Monte Carlo life at R and its fit) at once.
-      const ImmediateStopScope immediate;
       if (!start) start = Obtained{base.evaluate_design(x, ledger.threads()), Origin::kNew, 0};
     } catch (const Interrupted&) {
       // Ctrl-C inside one long evaluation (a Monte Carlo life at R): nothing
-      // of it is recorded; the study stops and --resume evaluates it again.
-      ledger.stop_requested();
+      // of it is recorded; the study stops, its report is written (a stopped
+      // study with what --resume finds) and --resume evaluates it again.
+      ledger.mark_stopped();
     }
   }
   if (start) {

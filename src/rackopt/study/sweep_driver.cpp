@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "rackopt/core/interrupt.hpp"
 #include "rackopt/doe/samplers.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
@@ -86,7 +87,15 @@ StudyStatus drive_sweep(const KindDriverContext& ctx, const std::vector<std::vec
     std::vector<std::vector<double>> miss_xs;
     for (std::size_t k : misses) miss_xs.push_back(xs[k]);
     if (!miss_xs.empty()) {
-      std::vector<DesignEvaluation> computed = ledger.executor().evaluate(base, miss_xs, ledger.threads());
+      std::vector<DesignEvaluation> computed;
+      try {
+        computed = ledger.executor().evaluate(base, miss_xs, ledger.threads());
+      } catch (const Interrupted&) {
+        // Ctrl-C inside an evaluation (a Monte Carlo life at R): the chunk
+        // is abandoned, --resume evaluates it again; the report is written.
+        ledger.mark_stopped();
+        break;
+      }
       for (std::size_t j = 0; j < misses.size(); ++j) fresh[misses[j]] = std::move(computed[j]);
     }
     for (std::size_t k = 0; k < n; ++k) {

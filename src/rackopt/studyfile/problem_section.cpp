@@ -93,6 +93,17 @@ LoadedProblem read_problem_section(const SectionReader& top, const std::string& 
     spec.problem_path = (p.is_absolute() || base_dir.empty()) ? p.lexically_normal().string()
                                                               : (fs::path(base_dir) / p).lexically_normal().string();
     std::error_code ec;
+    const fs::file_type type = fs::status(spec.problem_path, ec).type();
+    if (type != fs::file_type::not_found && type != fs::file_type::regular && !ec) {
+      // A FIFO would block the read for ever (docs/input_limits.md).
+      const std::string kind = type == fs::file_type::directory ? "a directory"
+                               : type == fs::file_type::fifo    ? "a FIFO (named pipe)"
+                               : type == fs::file_type::character || type == fs::file_type::block ? "a device"
+                                                                                                    : "a special file";
+      throw InputError(problem_text->second, "problem",
+                       "the problem file '" + spec.problem_path + "' is " + kind +
+                           ", not a regular file: give the path of a .yaml file");
+    }
     if (!fs::is_regular_file(spec.problem_path, ec)) {
       throw InputError(problem_text->second, "problem",
                        "cannot open the problem file '" + spec.problem_path + "'" +
