@@ -2,6 +2,7 @@
 
 #include "rackopt/study/combination_runs.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
+#include "rackopt/study/wear_discretization_check.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
@@ -98,7 +99,10 @@ StudyStatus drive_optimize(const KindDriverContext& ctx) {
       result.per_combination.push_back(std::move(co));
     }
   }
-  if (result.best && !ledger.stopped()) result.explanation = explain_optimum(base, result.best->x, ledger.threads());
+  if (result.best && !ledger.stopped()) {
+    result.explanation = explain_optimum(base, result.best->x, ledger.threads());
+    check_wear_discretization(base, result.best->x, *result.explanation, ledger.threads());
+  }
   return status;
 }
 
