@@ -676,7 +676,7 @@ struct WearModel::Impl {
   // the base circle, the single-pair zone's ends): a peak narrower than the
   // point spacing falls between points, and the grid's largest rate is then
   // too small by up to the peak's rise over a spacing, the life too long
-  // (docs/models/wear.md, "Points").
+  // (docs/models/wear.md, "Default: 240 points").
   void place_probe(const Path& p, const std::vector<double>& P0, int mb, int i, Probe& pr) const {
     double lo = p.s[std::max(i - 1, 0)], hi = p.s[std::min(i + 1, p.N - 1)];
     auto load_at = [&](double c) {
