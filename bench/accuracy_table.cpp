@@ -8,6 +8,10 @@
 //   ./build/accuracy_table problem.yaml ...        the same (stiffness only)
 //   ./build/accuracy_table wear [problem.yaml]     wear only (default: problems/ship_lift.yaml;
 //                                                  the cases are chosen for that drive, ~1-2 min)
+//   ./build/accuracy_table wear_points [--detail]  the wear life against wear.profile_points on
+//                                                  every shipped problem with a wear section and
+//                                                  a spread of lifting platforms (~20 s; --detail:
+//                                                  one row per drive and pressure angle)
 //   ./build/accuracy_table wear_resolution         wear model resolution (positions per point,
 //                                                  compliance-table intervals) on the start
 //                                                  designs of the ship-lift and gantry studies

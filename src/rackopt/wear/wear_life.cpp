@@ -1170,7 +1170,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
         limiting_member = fm;
         limiting_s = p.s[fi];
       }
-      res.criterion = limit_is_case[fm] ? "case_depth" : "max_depth";
+      res.criterion = limit_is_case[limiting_member] ? "case_depth" : "max_depth";
       if (update) {
         eps = solve(p, h[kPinion], h[kRack], F, margin);
         ++solves;
