@@ -629,6 +629,30 @@ void wear_points_tables(bool detail) {
       if (detail) std::printf("\n");
     }
   }
+  if (detail) {
+    // The smoothness of life(contact ratio) on the ship lift (update off):
+    // the largest second difference over 1.40..1.50 in steps of 0.002 (the
+    // jitter a coarse grid adds), and the largest difference from 960 points.
+    const Drive ship = rackopt::load_problem(dir + "ship_lift.yaml");
+    auto lives = [&](int n) {
+      Drive d = ship;
+      d.wear.profile_points = n;
+      const WearModel m(d);
+      std::vector<double> life;
+      for (int k = 0; k <= 50; ++k)
+        life.push_back(m.life({.contact_ratio = 1.40 + 0.002 * k}, WearModel::Detail::kLifeOnly).life_years);
+      return life;
+    };
+    const std::vector<double> ref = lives(960);
+    for (int n : {60, 120, 240, 960}) {
+      const std::vector<double> life = lives(n);
+      double d2 = 0, dref = 0;
+      for (int k = 1; k < 50; ++k) d2 = std::max(d2, std::abs(life[k + 1] - 2 * life[k] + life[k - 1]) / life[k]);
+      for (int k = 0; k <= 50; ++k) dref = std::max(dref, std::abs(life[k] / ref[k] - 1));
+      std::printf("ship lift life(eps), eps 1.40..1.50 step 0.002, %d points: largest |second difference| %.1e, "
+                  "largest |life / life(960 points) - 1| %.1e\n", n, d2, dref);
+    }
+  }
   for (std::size_t j = 0; j < kSpreadPoints.size(); ++j) {
     std::printf("| %d |", kSpreadPoints[j]);
     for (std::size_t k = 0; k < drives.size(); ++k)

@@ -64,5 +64,22 @@ TEST(ProfilePointsConvergence, FrozenLoadLifeFindsThePeakBetweenPoints) {
   for (int n : {60, 90, 120}) EXPECT_NEAR(life_at(d, n) / ref, 1.0, 2e-4) << n << " points";
 }
 
+// The same across sampled contact ratios: without the probe, the 60-point
+// life(eps) jittered by 1-4e-3 as the peak moved across the points (the
+// clumping of Monte Carlo lives, docs/models/reliability.md, "Resolution").
+TEST(ProfilePointsConvergence, FrozenLoadLifeIsSmoothInTheContactRatio) {
+  Drive coarse = load_problem(kProblems + "ship_lift.yaml");  // update_profile off
+  Drive fine = coarse;
+  coarse.wear.profile_points = 60;
+  fine.wear.profile_points = 240;
+  const WearModel mc(coarse), mf(fine);
+  for (int k = 0; k <= 20; ++k) {
+    const WearSample s{.contact_ratio = 1.40 + 0.005 * k};
+    EXPECT_NEAR(mc.life(s, WearModel::Detail::kLifeOnly).life_cycles / mf.life(s, WearModel::Detail::kLifeOnly).life_cycles,
+                1.0, 1e-5)
+        << *s.contact_ratio;
+  }
+}
+
 }  // namespace
 }  // namespace rackopt
