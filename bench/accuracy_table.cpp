@@ -8,6 +8,10 @@
 //   ./build/accuracy_table problem.yaml ...        the same (stiffness only)
 //   ./build/accuracy_table wear [problem.yaml]     wear only (default: problems/ship_lift.yaml;
 //                                                  the cases are chosen for that drive, ~1-2 min)
+//   ./build/accuracy_table wear_points [--detail]  the wear life against wear.profile_points on
+//                                                  every shipped problem with a wear section and
+//                                                  a spread of lifting platforms (~20 s; --detail:
+//                                                  one row per drive and pressure angle)
 //   ./build/accuracy_table wear_resolution         wear model resolution (positions per point,
 //                                                  compliance-table intervals) on the start
 //                                                  designs of the ship-lift and gantry studies
@@ -39,6 +43,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -517,6 +522,146 @@ void wear_resolution_table(const std::string& study_file, const ResolutionCase& 
   std::printf("\n");
 }
 
+// ------------------------------------------------------- wear_points --
+// The wear life against wear.profile_points on every shipped problem with a
+// wear section and on a spread of lifting-platform drives (module 6-10 mm,
+// 17-25 teeth, pressure angle 17-25 deg in steps of 0.5 deg, through- and
+// case-hardened): the signed error against 1920 points, its range over the
+// pressure angles, and the time of one life.
+struct SpreadDrive {
+  const char* label;
+  std::vector<std::string> overrides;  // on problems/gantry_axis.yaml
+};
+
+std::vector<SpreadDrive> lifting_platforms() {
+  const std::string case_h = "{kind: case_hardened, surface: 650 HV, core: 350 HV, case_depth: ";
+  auto drive = [&](const char* label, int m, int z, int face, int thrust_kN, bool through) {
+    std::vector<std::string> o = {"pinion.module=" + std::to_string(m) + " mm",
+                                  "pinion.teeth=" + std::to_string(z),
+                                  "pinion.face_width=" + std::to_string(face) + " mm",
+                                  "load.thrust=" + std::to_string(thrust_kN) + " kN",
+                                  "rack.body_height=" + std::to_string(5 * m) + " mm",
+                                  "wear.max_depth=0.3 mm",
+                                  "duty.travel_per_year=300 km/yr",
+                                  "duty.stroke=4 m"};
+    const std::string h = through ? "{kind: constant, surface: 300 HB}"
+                                  : case_h + std::to_string(0.15 * m).substr(0, 4) + " mm, limit: 550 HV}";
+    o.push_back("wear.pinion_hardness=" + h);
+    o.push_back("wear.rack_hardness=" + h);
+    return SpreadDrive{label, o};
+  };
+  return {drive("m6 z17 case", 6, 17, 60, 25, false), drive("m8 z21 through", 8, 21, 80, 40, true),
+          drive("m8 z17 case", 8, 17, 80, 60, false), drive("m10 z25 through", 10, 25, 100, 60, true)};
+}
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+const std::vector<int> kSpreadPoints = {30, 60, 90, 120, 180, 240, 360, 480};
+
+double life_at_points(const Drive& base, int points) {
+  Drive d = base;
+  d.wear.profile_points = points;
+  return WearModel(d).life({}, WearModel::Detail::kLifeOnly).life_cycles;
+}
+
+double ms_at_points(const Drive& base, int points) {
+  Drive d = base;
+  d.wear.profile_points = points;
+  return time_life(WearModel(d), {}).ms;
+}
+
+void wear_points_tables(bool detail) {
+  const std::string dir = std::string(RACKOPT_SOURCE_DIR) + "/problems/";
+  std::printf("Shipped problems (each file's settings but the profile points; error against %d points):\n\n",
+              kReferencePoints);
+  struct Shipped {
+    const char* label;
+    std::string file;
+    std::vector<std::string> overrides;
+  };
+  const std::vector<Shipped> shipped = {{"gantry_axis", dir + "gantry_axis.yaml", {}},
+                                        {"ship_lift (update off)", dir + "ship_lift.yaml", {}},
+                                        {"ship_lift, update on", dir + "ship_lift.yaml", {"wear.update_profile=on"}}};
+  std::printf("| profile points |");
+  for (const Shipped& s : shipped) std::printf(" %s: life error | ms |", s.label);
+  std::printf("\n|---|");
+  for (std::size_t k = 0; k < shipped.size(); ++k) std::printf("---|---|");
+  std::printf("\n");
+  std::vector<Drive> sd;
+  std::vector<double> sref;
+  for (const Shipped& s : shipped) {
+    sd.push_back(rackopt::load_problem(s.file, s.overrides));
+    sref.push_back(life_at_points(sd.back(), kReferencePoints));
+  }
+  for (int n : kSpreadPoints) {
+    std::printf("| %d |", n);
+    for (std::size_t k = 0; k < shipped.size(); ++k)
+      std::printf(" %+.1e | %.2f |", signed_rel(life_at_points(sd[k], n), sref[k]), ms_at_points(sd[k], n));
+    std::printf("\n");
+  }
+  std::printf("\nLifting platforms (problems/gantry_axis.yaml with module, teeth, face width, thrust, hardness; "
+              "update on; pressure angle 17..25 deg in 0.5 deg steps; error against %d points: smallest .. largest "
+              "over the 17 angles; ms at 21 deg):\n\n",
+              kReferencePoints);
+  const std::vector<SpreadDrive> drives = lifting_platforms();
+  std::printf("| profile points |");
+  for (const SpreadDrive& s : drives) std::printf(" %s: life error | ms |", s.label);
+  std::printf("\n|---|");
+  for (std::size_t k = 0; k < drives.size(); ++k) std::printf("---|---|");
+  std::printf("\n");
+  std::vector<std::vector<double>> lo(drives.size(), std::vector<double>(kSpreadPoints.size(), kInfinity)),
+      hi(drives.size(), std::vector<double>(kSpreadPoints.size(), -kInfinity)), ms = lo;
+  for (std::size_t k = 0; k < drives.size(); ++k) {
+    for (int a2 = 34; a2 <= 50; ++a2) {
+      std::vector<std::string> o = drives[k].overrides;
+      char pa[64];
+      std::snprintf(pa, sizeof pa, "pinion.pressure_angle=%g deg", a2 / 2.0);
+      o.push_back(pa);
+      const Drive d = rackopt::load_problem(dir + "gantry_axis.yaml", o);
+      const double ref = life_at_points(d, kReferencePoints);
+      if (detail) std::printf("%s %4.1f deg:", drives[k].label, a2 / 2.0);
+      for (std::size_t j = 0; j < kSpreadPoints.size(); ++j) {
+        const double e = signed_rel(life_at_points(d, kSpreadPoints[j]), ref);
+        lo[k][j] = std::min(lo[k][j], e);
+        hi[k][j] = std::max(hi[k][j], e);
+        if (a2 == 42) ms[k][j] = ms_at_points(d, kSpreadPoints[j]);
+        if (detail) std::printf(" %+.4f", e);
+      }
+      if (detail) std::printf("\n");
+    }
+  }
+  if (detail) {
+    // The smoothness of life(contact ratio) on the ship lift (update off):
+    // the largest second difference over 1.40..1.50 in steps of 0.002 (the
+    // jitter a coarse grid adds), and the largest difference from 960 points.
+    const Drive ship = rackopt::load_problem(dir + "ship_lift.yaml");
+    auto lives = [&](int n) {
+      Drive d = ship;
+      d.wear.profile_points = n;
+      const WearModel m(d);
+      std::vector<double> life;
+      for (int k = 0; k <= 50; ++k)
+        life.push_back(m.life({.contact_ratio = 1.40 + 0.002 * k}, WearModel::Detail::kLifeOnly).life_years);
+      return life;
+    };
+    const std::vector<double> ref = lives(960);
+    for (int n : {60, 120, 240, 960}) {
+      const std::vector<double> life = lives(n);
+      double d2 = 0, dref = 0;
+      for (int k = 1; k < 50; ++k) d2 = std::max(d2, std::abs(life[k + 1] - 2 * life[k] + life[k - 1]) / life[k]);
+      for (int k = 0; k <= 50; ++k) dref = std::max(dref, std::abs(life[k] / ref[k] - 1));
+      std::printf("ship lift life(eps), eps 1.40..1.50 step 0.002, %d points: largest |second difference| %.1e, "
+                  "largest |life / life(960 points) - 1| %.1e\n", n, d2, dref);
+    }
+  }
+  for (std::size_t j = 0; j < kSpreadPoints.size(); ++j) {
+    std::printf("| %d |", kSpreadPoints[j]);
+    for (std::size_t k = 0; k < drives.size(); ++k)
+      std::printf(" %+.1e .. %+.1e | %.2f |", lo[k][j], hi[k][j], ms[k][j]);
+    std::printf("\n");
+  }
+  std::printf("\n");
+}
+
 void wear_resolution_tables() {
   // The reference: every knob at its finest default of before (2 positions
   // per point whatever the points, 512 table intervals).
@@ -841,6 +986,15 @@ int main(int argc, char** argv) {
   if (!args.empty() && args[0] == "wear_resolution") {
     try {
       wear_resolution_tables();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
+  if (!args.empty() && args[0] == "wear_points") {
+    try {
+      wear_points_tables(args.size() > 1 && args[1] == "--detail");
     } catch (const std::exception& e) {
       std::fprintf(stderr, "accuracy_table: %s\n", e.what());
       return 1;

@@ -55,9 +55,9 @@ void BM_WearLife(benchmark::State& state) {
 BENCHMARK(BM_WearLife)
     ->ArgNames({"points", "update"})
     ->Args({0, -1})   // the file's settings: 240 points, update off
-    ->Args({60, 1})   // the model's defaults: 60 points, update on, block_fraction 0.02
+    ->Args({60, 1})   // 60 points, update on, block_fraction 0.02
     ->Args({60, 0})
-    ->Args({240, 1})
+    ->Args({240, 1})  // the model's defaults: 240 points, update on, block_fraction 0.02
     ->Unit(benchmark::kMillisecond);
 
 // One life of a sampled contact ratio (the path and band weights are rebuilt

@@ -227,7 +227,7 @@ struct WearSpec {
   double min_contact_ratio = 1.0;    // [eps]: failure when the contact ratio falls below
   bool stop_at_case_depth = false;   // failure when wear reaches a case-hardened profile's case_depth
   bool update_profile = true;        // re-solve load sharing and contact ratio on the worn profiles
-  int profile_points = 60;           // points along each member's active profile
+  int profile_points = 240;          // points along each member's active profile (docs/models/wear.md: why 240)
   double block_fraction = 0.02;      // adaptive block: at most this fraction of h_max worn per block
 };
 

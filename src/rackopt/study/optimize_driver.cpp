@@ -3,6 +3,7 @@
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/study/combination_runs.hpp"
 #include "rackopt/study/optimum_explanation.hpp"
+#include "rackopt/study/wear_discretization_check.hpp"
 #include "rackopt/study/recorded_problem.hpp"
 #include "rackopt/study/study_kind_drivers.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
@@ -102,9 +103,11 @@ StudyStatus drive_optimize(const KindDriverContext& ctx) {
   if (result.best && !ledger.stopped()) {
     try {
       result.explanation = explain_optimum(base, result.best->x, ledger.threads());
+      check_wear_discretization(base, result.best->x, *result.explanation, ledger.threads());
     } catch (const Interrupted&) {
-      // Ctrl-C while the optimum's neighbours were evaluated: every design
-      // is recorded; the report says stopped, without the explanation.
+      // Ctrl-C while the optimum's neighbours (or its refinement) were
+      // evaluated: every design is recorded; the report says stopped,
+      // without the explanation (or without the refinement's error).
       ledger.mark_stopped();
       status = StudyStatus::kStopped;
     }

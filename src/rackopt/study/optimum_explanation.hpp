@@ -19,6 +19,16 @@
 
 namespace rackopt::study {
 
+// A metric's value at the design against one refinement of its model's
+// discretization (study/wear_discretization_check.hpp).
+struct DiscretizationError {
+  std::string setting;       // the refined setting, e.g. "wear.profile_points"
+  int points = 0;            // its value in the study
+  int refined_points = 0;    // the refinement's
+  double refined_value = 0;  // SI
+  double relative_error = 0;  // (value - refined_value) / |refined_value|: the value's error, estimated
+};
+
 struct ConstraintStatus {
   std::string label;             // metric label
   std::string side;              // "min", "max" or "equals": the bound nearest the value
@@ -31,6 +41,9 @@ struct ConstraintStatus {
   // unit (positive = tightening a min bound or relaxing a max bound costs).
   std::optional<double> bound_sensitivity;
   std::vector<std::optional<double>> gradient;  // d value / d x_i per continuous variable (SI per SI)
+  // Active wear-life constraints: the value against one refinement of the
+  // profile points (check_wear_discretization); empty otherwise.
+  std::optional<DiscretizationError> discretization;
 };
 
 struct VariableStatus {

@@ -5,6 +5,7 @@
 
 #include "rackopt/metrics/metric_registry.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
+#include "rackopt/study_report/discretization_report.hpp"
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 #include "rackopt/units/units.hpp"
@@ -137,6 +138,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
   o << "\nThe last column is the change of the optimal " << e.objective
     << " when the bound is tightened by 1 % (Lagrange multiplier times the change; positive = costs objective), "
        "to first order.\n\n";
+  o << discretization_markdown(e);
   o << variables_at_bounds_markdown(spec, e);
   if (!e.gradient_variables.empty()) {
     o << "| variable | difference | d " << e.objective << " |";
@@ -246,6 +248,10 @@ void optimum_json(JsonWriter& j, const StudySpec& spec, const StudyResult& r,
       j.key("gradient").begin_array();
       for (const auto& g : c.gradient) opt(g);
       j.end_array();
+      if (c.discretization) {
+        j.key("discretization");
+        discretization_json(j, *c.discretization);
+      }
       j.end_object();
     }
     j.end_array();

@@ -626,6 +626,90 @@ struct WearModel::Impl {
     }
   }
 
+  // The peak probe: one extra flank point of member mb at an arbitrary LOA
+  // coordinate c, with its band from the unworn pair loads P0 (signed
+  // margins) as a profile point's (half_widths, point_band), frozen while it
+  // wears. Its pass load is sum val * load * slide, like a profile point's.
+  struct Probe {
+    int mb = -1;
+    double c = 0, slide = 0;
+    std::vector<int> idx;
+    std::vector<double> val;
+    double g = 0, h = 0, g_prev = 0, rate = 0;  // as the profile points' g, h, g_prev and rate
+  };
+  void set_probe(const Path& p, const std::vector<double>& P0, int mb, double c, Probe& pr) const {
+    pr.mb = mb;
+    pr.c = c;
+    pr.idx.clear();
+    pr.val.clear();
+    const RackPinionSliding kin(sP, s_floor);
+    pr.slide = mb == kPinion ? kin.pinion_sliding_ratio(c) : kin.rack_sliding_ratio(c);
+    PointBand band{false, c, 0.0};
+    if (opt.hertz_band) {
+      pointwise_weights(p.node_c, p.intervals, c, pr.idx, pr.val);
+      double w0 = 0;
+      for (std::size_t k = 0; k < pr.idx.size(); ++k) w0 += pr.val[k] * P0[pr.idx[k]];
+      pr.idx.clear();
+      pr.val.clear();
+      const double a = hertz_line_contact(std::max(w0, 0.0), std::max(c, s_floor), e_star).half_width;
+      if (mb == kRack) {
+        if (a / ta > 1e-12 * pb) band = {true, c, a / ta};
+      } else if (a > 1e-12 * pb) {
+        const InvoluteWindow win = involute_band_window(c, a, rb, sP);
+        if (win.hi - win.lo > 2e-12 * pb) {
+          pr.slide = win.slide;
+          band = {true, 0.5 * (win.lo + win.hi), 0.5 * (win.hi - win.lo)};
+        }
+      }
+    }
+    point_weights(p, band, pr.idx, pr.val);
+  }
+  static double probe_pass_load(const Probe& pr, const std::vector<double>& margin) {
+    double w = 0;
+    for (std::size_t k = 0; k < pr.idx.size(); ++k) w += pr.val[k] * std::max(margin[pr.idx[k]], 0.0);
+    return w * pr.slide;
+  }
+  // Places the probe at the largest unworn pass load of member mb between
+  // the profile points around point i (golden-section search; the grid
+  // point's own load is the start). The wear rate peaks sharply where the
+  // sliding is large and the band meets a load step (the pinion root near
+  // the base circle, the single-pair zone's ends): a peak narrower than the
+  // point spacing falls between points, and the grid's largest rate is then
+  // too small by up to the peak's rise over a spacing, the life too long
+  // (docs/models/wear.md, "Default: 240 points").
+  void place_probe(const Path& p, const std::vector<double>& P0, int mb, int i, Probe& pr) const {
+    double lo = p.s[std::max(i - 1, 0)], hi = p.s[std::min(i + 1, p.N - 1)];
+    auto load_at = [&](double c) {
+      set_probe(p, P0, mb, c, pr);
+      return probe_pass_load(pr, P0);
+    };
+    double best_c = p.s[i], best = load_at(best_c);
+    constexpr double kGolden = 0.6180339887498949;
+    double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+    double f1 = load_at(x1), f2 = load_at(x2);
+    // 24 steps shrink the bracket to 1e-5 of two spacings.
+    for (int it = 0; it < 24; ++it) {
+      if (f1 > best) best = f1, best_c = x1;
+      if (f2 > best) best = f2, best_c = x2;
+      if (f1 >= f2) {
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - kGolden * (hi - lo);
+        f1 = load_at(x1);
+      } else {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + kGolden * (hi - lo);
+        f2 = load_at(x2);
+      }
+    }
+    if (f1 > best) best = f1, best_c = x1;
+    if (f2 > best) best = f2, best_c = x2;
+    set_probe(p, P0, mb, best_c, pr);
+  }
+
   // Band-averaging weights of both members from the unworn pair loads P0
   // (signed margins, solve).
   void build_weights(Path& p, const std::vector<double>& P0) const {
@@ -999,7 +1083,12 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
     for (int mb = 0; mb < 2; ++mb) hist_g.insert(hist_g.end(), g[mb].begin(), g[mb].end());
 
   double n = 0, eps = eps0;
-  int limiting_member = kRack, limiting_point = -1;
+  int limiting_member = kRack;
+  double limiting_s = 0;  // LOA coordinate of the point that reached its limit
+  // The peak probe (place_probe): placed in the first block at the largest
+  // unworn pass load next to the point that fails first, then worn like a
+  // profile point (it does not enter the load sharing: one point).
+  Probe probe;
   const long max_blocks = static_cast<long>(2.0 * N / f_blk) + 10;
   for (long blk = 0;; ++blk) {
     if (blk > max_blocks) throw std::runtime_error("wear: block limit exceeded (internal error)");
@@ -1030,6 +1119,9 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
         rate[fm][i] = Kk * q[fm][i] * rho[fm] / sig;
       }
     }
+    if (blk == 0) place_probe(p, margin, fm, fi, probe);
+    probe.rate = Kk * probe_pass_load(probe, margin) * rho[probe.mb] / sig;
+    const bool near_probe = fm == probe.mb && std::abs(p.s[fi] - probe.c) <= p.ds * (1 + 1e-9);
     // The deepest wear lies between profile points in general: take the
     // vertex of the parabola through the passes-to-failure of the first
     // failing point and its neighbours. Without it the life jumps as the
@@ -1043,7 +1135,18 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
       // Only a smooth peak: the vertex within half a spacing of the point.
       // At a jump or kink of the wear rate (the pointwise law at a change of
       // the number of pairs) a parabola means nothing and the point stands.
-      if (curv > 0 && std::abs(a - c) <= curv) n_fail -= (a - c) * (a - c) / (8.0 * curv);
+      // Next to the probe the probe stands for the peak (it found it).
+      if (curv > 0 && std::abs(a - c) <= curv && !near_probe) n_fail -= (a - c) * (a - c) / (8.0 * curv);
+    }
+    bool probe_fails = false;
+    if (probe.rate > 0) {
+      const int mb = probe.mb;
+      const double nf = (G[mb].total() - probe.g) / probe.rate;
+      if (nf <= n_fail) {
+        n_fail = nf;
+        probe_fails = true;
+      }
+      if (update) n_blk = std::min(n_blk, (G[mb].G(std::min(probe.h + f_blk * hmax, limit[mb])) - probe.g) / probe.rate);
     }
     res.blocks = static_cast<int>(blk + 1);
     if (n_fail <= n_blk) {
@@ -1052,12 +1155,22 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
           g[mb][i] += rate[mb][i] * n_fail;
           h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
         }
-      g[fm][fi] = G[fm].total();
-      h[fm][fi] = limit[fm];  // finish exactly at the threshold
       n += n_fail;
-      limiting_member = fm;
-      limiting_point = fi;
-      res.criterion = limit_is_case[fm] ? "case_depth" : "max_depth";
+      // Finish exactly at the threshold.
+      if (probe_fails) {
+        probe.g = G[probe.mb].total();
+        probe.h = limit[probe.mb];
+        limiting_member = probe.mb;
+        limiting_s = probe.c;
+      } else {
+        g[fm][fi] = G[fm].total();
+        h[fm][fi] = limit[fm];
+        probe.g += probe.rate * n_fail;
+        probe.h = G[probe.mb].inverse_near(probe.g, probe.h);
+        limiting_member = fm;
+        limiting_s = p.s[fi];
+      }
+      res.criterion = limit_is_case[limiting_member] ? "case_depth" : "max_depth";
       if (update) {
         eps = solve(p, h[kPinion], h[kRack], F, margin);
         ++solves;
@@ -1071,6 +1184,9 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
         g[mb][i] += rate[mb][i] * n_blk;
         h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
       }
+    probe.g_prev = probe.g;
+    probe.g += probe.rate * n_blk;
+    probe.h = G[probe.mb].inverse_near(probe.g, probe.h);
     const double eps_new = solve(p, h[kPinion], h[kRack], F, margin);
     ++solves;
     if (eps_new < min_cr) {
@@ -1082,6 +1198,8 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
             g[mb][i] = g_prev[mb][i] + rate[mb][i] * n_blk * t;
             h[mb][i] = G[mb].inverse_near(g[mb][i], h[mb][i]);
           }
+        probe.g = probe.g_prev + probe.rate * n_blk * t;
+        probe.h = G[probe.mb].inverse_near(probe.g, probe.h);
         ++solves;
         return solve(p, h[kPinion], h[kRack], F, margin) - min_cr;
       };
@@ -1134,6 +1252,13 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
         res.max_depth_s = p.s[i];
         res.max_depth_position = (mb == kPinion ? res.pinion : res.rack).position[i];
       }
+  if (!bounded && probe.h > best) {
+    best = probe.h;
+    res.max_depth_member = probe.mb == kPinion ? Member::kPinion : Member::kRack;
+    res.max_depth_s = probe.c;
+    const double s0 = std::max(p.s_start, 0.0), sc = std::max(probe.c, 0.0);
+    res.max_depth_position = probe.mb == kPinion ? (sc * sc - s0 * s0) / (2 * rb) : (s_end - probe.c) * ta;
+  }
   res.max_depth = best;
   if (res.criterion == "contact_ratio") {
     limiting_member = res.max_depth_member == Member::kPinion ? kPinion : kRack;
@@ -1148,7 +1273,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
     } else {
       o << "the " << who << " flank wore to " << limit[limiting_member] * 1e3 << " mm"
         << (res.criterion == "case_depth" ? " (the hardened case depth)" : " (wear.max_depth)") << " at s = "
-        << p.s[limiting_point] * 1e3 << " mm after " << n << " rack passes";
+        << limiting_s * 1e3 << " mm after " << n << " rack passes";
     }
     res.reason = o.str();
   }

@@ -10,6 +10,10 @@
 // unit width of the pair when the contact passes the point, averaged over the
 // Hertz band with the elliptic pressure weight (so load jumps at the zone
 // transitions are seen through the contact band, not as points).
+// One more flank point, the peak probe, sits at the largest unworn pass
+// load between the profile points next to the point that fails first, so a
+// wear peak narrower than the point spacing is not missed (docs/models/wear.md,
+// "Default: 240 points").
 // The pair loads come from the tooth models' local compliances with a rigid
 // rack body and unilateral contact on the worn profiles (docs/models/mesh.md).
 // docs/models/wear.md has the equations, the choices and the measured cost.
