@@ -1,5 +1,7 @@
 #include "rackopt/study_report/study_report.hpp"
 
+#include "rackopt/study_report/markdown_text.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -132,7 +134,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
       std::ifstream in(svg, std::ios::binary);
       std::ostringstream text;
       text << in.rdbuf();
-      svg_by_target[link_target(dir, entry.second)] = inline_svg(text.str(), "plot" + std::to_string(++plots) + "-");
+      svg_by_target[markdown_link_destination(link_target(dir, entry.second))] = inline_svg(text.str(), "plot" + std::to_string(++plots) + "-");
     }
   }
   for (const auto& w : plot_warnings) rep.warnings.push_back(w);
