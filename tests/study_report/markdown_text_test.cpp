@@ -73,7 +73,7 @@ std::string seen_text(cmark_node* n) {
   std::string out;
   for (cmark_node* c = cmark_node_first_child(n); c != nullptr; c = cmark_node_next(c)) {
     const cmark_node_type t = cmark_node_get_type(c);
-    if (t == CMARK_NODE_TEXT || t == CMARK_NODE_CODE || t == CMARK_NODE_HTML_INLINE) {
+    if (t == CMARK_NODE_TEXT || t == CMARK_NODE_CODE || t == CMARK_NODE_HTML_INLINE || t == CMARK_NODE_CODE_BLOCK) {
       out += cmark_node_get_literal(c);
     } else if (t == CMARK_NODE_SOFTBREAK || t == CMARK_NODE_LINEBREAK) {
       out += '\n';

@@ -180,6 +180,9 @@ bool allowed_link_destination(std::string_view url) {
   while (start < u.size() && static_cast<unsigned char>(u[start]) <= 0x20) ++start;
   u.erase(0, start);
   const std::size_t end = u.find_first_of(":/?#");
+  // An entity where a scheme would be ("jav&#x61;script:") is one that was
+  // not decoded: never a plain relative path.
+  if (u.find('&') < end) return false;
   if (end == std::string::npos || u[end] != ':') return true;  // relative: no scheme
   const std::string scheme = lower(u.substr(0, end));
   return scheme == "http" || scheme == "https" || scheme == "mailto";

@@ -52,8 +52,9 @@ std::string markdown_description(std::string_view markdown);
 // "#top", "//host/x"), http:, https: or mailto:, scheme in any case, after
 // dropping leading spaces and control characters and every tab and line
 // break (browsers ignore them). False for every other scheme (javascript:,
-// vbscript:, data:, file:, ...). cmark-gfm has already decoded entities
-// ("jav&#x61;script:") in the destinations it gives.
+// vbscript:, data:, file:, ...), and for an '&' before the first of : / ? #
+// (an entity left undecoded, "jav&#x61;script:"; cmark-gfm decodes them in
+// the destinations it gives).
 bool allowed_link_destination(std::string_view url);
 
 // In the cmark-gfm tree under `root`: every LINK or IMAGE node whose
