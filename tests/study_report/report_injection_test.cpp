@@ -184,6 +184,30 @@ TEST(ReportInjection, ReportHtmlDropsForbiddenLinksOfAnyMarkdown) {
   EXPECT_EQ(occurrences_of(html, "<a href"), 1u) << html;
 }
 
+// Paths, --set overrides and messages: one code span or one table cell each.
+TEST(ReportInjection, PathsOverridesAndMessagesStayOneSpanOrCell) {
+  StudySpec spec = base_spec(StudyKind::kOptimize);
+  spec.file = "a`b\n# x.yaml";
+  spec.problem_overrides = {"k=`v`|\n- y"};
+  StudyResult r;
+  r.status = study::StudyStatus::kConverged;
+  r.best = design(spec, 0.025, 2.0, "start 0");
+  r.best->message = "m|n\n| x |";
+  r.evaluations = 1;
+  const std::string dir = scratch_path("injection_cells");
+  write_study_report(spec, r, dir);
+  const std::string md = read_text(dir + "/report.md");
+  EXPECT_NE(md.find("\n- study file: ``a`b # x.yaml``\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("\n- problem override: ``k=`v`| - y``\n"), std::string::npos) << md;
+  EXPECT_NE(md.find("\n| message | m\\|n \\| x \\| |\n"), std::string::npos) << md;
+  EXPECT_EQ(md.find("\n# x.yaml"), std::string::npos);
+  EXPECT_EQ(md.find("\n- y"), std::string::npos);
+  const std::string html = read_text(dir + "/report.html");
+  EXPECT_NE(html.find("<code>a`b # x.yaml</code>"), std::string::npos) << html.substr(0, 2000);
+  EXPECT_NE(html.find("<code>k=`v`| - y</code>"), std::string::npos);
+  EXPECT_NE(html.find("<td>m|n | x |</td>"), std::string::npos);
+}
+
 // A message that a spreadsheet would run as a formula is written as text.
 TEST(ReportInjection, AFormulaInAMessageStaysTextInTheCsv) {
   StudySpec spec = base_spec(StudyKind::kSweep);
