@@ -111,7 +111,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
     if (!v.at_lower && !v.at_upper) continue;
     if (!any_bound) o << "Variables at a bound:";
     any_bound = true;
-    o << " " << markdown_code(v.key) << " (" << (v.at_lower ? "lower" : "upper") << ")";
+    o << " `" << v.key << "` (" << (v.at_lower ? "lower" : "upper") << ")";
   }
   o << (any_bound ? ".\n\n" : "No continuous variable is at a bound.\n\n");
   if (!e.gradient_variables.empty()) {
