@@ -231,6 +231,19 @@ TEST(MarkdownDescription, KeepsMarkdownDropsHtmlAndForbiddenLinks) {
   EXPECT_EQ(count_type(doc.get(), CMARK_NODE_EMPH), 1u) << md;
 }
 
+// The CommonMark renderer separates a list from a following list or code
+// block with "<!-- end list -->": the description carries no such HTML, and
+// the blocks stay apart.
+TEST(MarkdownDescription, AdjacentListsAndCodeStayApartWithoutHtml) {
+  const std::string md = markdown_description("- a\n- b\n\n\n* c\n\n1. d\n\n       indented code\n");
+  EXPECT_EQ(md.find("<!--"), std::string::npos) << md;
+  const Doc doc = parse_gfm(md);
+  EXPECT_EQ(count_type(doc.get(), CMARK_NODE_HTML_BLOCK), 0u) << md;
+  EXPECT_EQ(count_type(doc.get(), CMARK_NODE_LIST), 3u) << md;
+  EXPECT_EQ(count_type(doc.get(), CMARK_NODE_CODE_BLOCK), 1u) << md;
+  EXPECT_EQ(seen_text(doc.get()), "abcdindented code\n") << md;
+}
+
 TEST(MarkdownDescription, PlainTextComesBackAsWritten) {
   EXPECT_EQ(markdown_description("A synthetic study of two variables."), "A synthetic study of two variables.");
   EXPECT_EQ(markdown_description("First paragraph.\n\nSecond paragraph."), "First paragraph.\n\nSecond paragraph.");

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <memory>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -87,6 +88,36 @@ std::unique_ptr<cmark_parser, ParserFree> gfm_parser() {
     cmark_parser_attach_syntax_extension(parser.get(), ext);
   }
   return parser;
+}
+
+// The CommonMark renderer ends a list that a list or a code block follows
+// with the line "<!-- end list -->", raw HTML of its own. Each such line (as
+// the parser reads it: never one inside a code block) becomes the link
+// reference definition "[//]: # (end of list)", which ends the list as well
+// and renders as nothing.
+std::string without_list_end_comments(const std::string& markdown) {
+  static constexpr std::string_view kComment = "<!-- end list -->";
+  const auto parser = gfm_parser();
+  cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
+  const std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
+  std::set<int> lines;
+  for (cmark_node* n : nodes_where(doc.get(), [](cmark_node_type t) { return t == CMARK_NODE_HTML_BLOCK; })) {
+    if (literal_of(n).find(kComment) != std::string::npos) lines.insert(cmark_node_get_start_line(n));
+  }
+  if (lines.empty()) return markdown;
+  std::string out;
+  int line = 1;
+  for (std::size_t start = 0; start < markdown.size();) {
+    std::size_t end = markdown.find('\n', start);
+    end = end == std::string::npos ? markdown.size() : end + 1;
+    std::string text = markdown.substr(start, end - start);
+    const std::size_t at = text.find(kComment);
+    if (lines.count(line) != 0 && at != std::string::npos) text.replace(at, kComment.size(), "[//]: # (end of list)");
+    out += text;
+    start = end;
+    ++line;
+  }
+  return out;
 }
 
 }  // namespace
@@ -223,6 +254,7 @@ std::string markdown_description(std::string_view markdown) {
   if (rendered == nullptr) throw std::runtime_error("report.md: cmark-gfm could not render the study's description");
   std::string out(rendered);
   cmark_get_default_mem_allocator()->free(rendered);
+  out = without_list_end_comments(out);
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
   return out;
 }

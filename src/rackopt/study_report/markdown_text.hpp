@@ -45,7 +45,9 @@ std::string markdown_link_destination(std::string_view path);
 // its CommonMark renderer: the parser decides what the text means exactly as
 // report.html's renderer will (no second guess by hand), and the renderer
 // closes every block, so no unclosed code fence or HTML block in a
-// description can swallow the report that follows it.
+// description can swallow the report that follows it (where the renderer
+// would end a list with "<!-- end list -->", an empty link reference
+// definition "[//]: # (end of list)" does that without HTML).
 std::string markdown_description(std::string_view markdown);
 
 // True for a link destination a report may carry: relative ("plots/a.png",
