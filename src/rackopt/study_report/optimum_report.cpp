@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "rackopt/metrics/metric_registry.hpp"
-#include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study_report/markdown_text.hpp"
+#include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study_report/study_report.hpp"
 #include "rackopt/study/sweep_sensitivity.hpp"
 #include "rackopt/units/units.hpp"

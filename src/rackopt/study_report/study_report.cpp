@@ -1,7 +1,5 @@
 #include "rackopt/study_report/study_report.hpp"
 
-#include "rackopt/study_report/markdown_text.hpp"
-
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +15,7 @@
 #include "rackopt/study_report/design_tables.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
 #include "rackopt/study_report/front_quality_report.hpp"
+#include "rackopt/study_report/markdown_text.hpp"
 #include "rackopt/study_report/report_html.hpp"
 #include "rackopt/study_report/report_markdown.hpp"
 #include "rackopt/study_report/study_plots.hpp"
