@@ -3,7 +3,7 @@
 #   ./dev.sh demo            install what is missing, build, run the default study
 #   ./dev.sh test            install what is missing, build, run the whole test suite
 #   ./dev.sh test --sanitize the same under AddressSanitizer + UBSan, built with clang
-#                            (build-asan/), then 60 s of the input fuzzer
+#                            (build-asan/), then 60 s of the input and writer fuzzers
 #   ./dev.sh build           install + build only
 #   ./dev.sh python          install, build, and make `import rackopt` work for
 #                            /usr/bin/python3 (a rackopt.pth in its user site;
@@ -67,16 +67,26 @@ build_sanitized() {
   cmake --build build-asan -j "$JOBS" ${CMAKE_TARGET:+--target "$CMAKE_TARGET"} >&2
 }
 
-# fuzz SECONDS: libFuzzer from the shipped problems and studies (read in place,
-# never copied), with a fixed seed so a CI failure repeats. New inputs go to
-# build-asan/fuzz-corpus, crashes to build-asan/fuzz-artifacts (make each a
-# file in tests/fuzz/regressions/).
+# fuzz SECONDS: two thirds of the time the input fuzzer from the shipped
+# problems and studies (read in place, never copied), one third the writer
+# fuzzer (user text into plot scripts, report.md, report.html) from
+# tests/fuzz/writer_corpus; a fixed seed so a CI failure repeats. New inputs
+# go to build-asan/fuzz-corpus and build-asan/writer-corpus, crashes to
+# build-asan/fuzz-artifacts (make each a file in tests/fuzz/regressions/ or
+# tests/fuzz/writer_corpus/).
 fuzz() {
-  mkdir -p build-asan/fuzz-corpus build-asan/fuzz-artifacts
+  local writer_seconds=$(( $1 / 3 ))
+  local input_seconds=$(( $1 - writer_seconds ))
+  cmake --build build-asan -j "$JOBS" --target rackopt_writer_fuzzer >&2
+  mkdir -p build-asan/fuzz-corpus build-asan/writer-corpus build-asan/fuzz-artifacts
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ./build-asan/rackopt_input_fuzzer -seed=1 -max_total_time="$1" -max_len=65536 -rss_limit_mb=2048 \
+    ./build-asan/rackopt_input_fuzzer -seed=1 -max_total_time="$input_seconds" -max_len=65536 -rss_limit_mb=2048 \
       -timeout=10 -dict=tests/fuzz/input.dict -artifact_prefix=build-asan/fuzz-artifacts/ \
       -print_final_stats=1 build-asan/fuzz-corpus problems studies </dev/null
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ./build-asan/rackopt_writer_fuzzer -seed=1 -max_total_time="$writer_seconds" -max_len=4096 -rss_limit_mb=2048 \
+      -timeout=10 -artifact_prefix=build-asan/fuzz-artifacts/writer- \
+      -print_final_stats=1 build-asan/writer-corpus tests/fuzz/writer_corpus </dev/null
 }
 
 cmd=${1:-demo}; shift || true

@@ -464,3 +464,28 @@ TEST(RunCli, ADamagedRecordedRowIsRecomputedOnResume) {
 }
 
 }  // namespace
+
+namespace {
+
+// A study file must never run commands: a line break in the study's name
+// that would end a gnuplot statement and start `system(...)` in every plot
+// script stays inside the title; the run succeeds and shows the name on one line.
+TEST(RunCli, AStudyNameRunsNoCommand) {
+  const std::string dir = scratch_dir("name_injection");
+  const std::string owned = fs::absolute(dir + "/owned").string();
+  const std::string path = dir + "/hostile.yaml";
+  std::ofstream(path) << "study: {name: \"pwn\\nsystem(\\\"touch " << owned << "\\\")\\n`touch " << owned
+                      << "` @x\", kind: optimize}\n"
+                      << "problem: " << RACKOPT_SOURCE_DIR << "/problems/rack_railway.yaml\n"
+                      << "variables:\n  rack.span: {lower: 1.2 m, upper: 3 m}\n"
+                      << "objectives: [stiffness_fluctuation]\n"
+                      << "solver: {algorithm: LN_COBYLA, max_evaluations: 6}\n";
+  const CliResult r = run_cli("run '" + path + "' --out " + dir + "/out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(owned)) << "gnuplot ran a command from the study's name";
+  const std::string shown = "study pwn system(\"touch " + owned + "\") `touch " + owned + "` @x (optimize)";
+  EXPECT_NE((r.out + r.err).find(shown), std::string::npos) << r.out << r.err;
+  EXPECT_TRUE(fs::exists(dir + "/out/history.gp"));
+}
+
+}  // namespace

@@ -32,6 +32,26 @@ TEST(Text, CsvFieldFollowsRfc4180) {
   EXPECT_EQ(csv_field("cr\r"), "\"cr\r\"");
 }
 
+// A spreadsheet runs a text cell starting with = + - @ tab or CR as a
+// formula: such a cell is written as quoted text behind an apostrophe.
+TEST(Text, CsvFieldKeepsSpreadsheetsFromRunningTextAsAFormula) {
+  EXPECT_EQ(csv_field("=HYPERLINK(\"http://x\",\"y\")"), "\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\"");
+  EXPECT_EQ(csv_field("+1+cmd|' /C calc'!A0"), "\"'+1+cmd|' /C calc'!A0\"");
+  EXPECT_EQ(csv_field("-2+3"), "\"'-2+3\"");
+  EXPECT_EQ(csv_field("@SUM(A1)"), "\"'@SUM(A1)\"");
+  EXPECT_EQ(csv_field("\t=1"), "\"'\t=1\"");
+  EXPECT_EQ(csv_field("\r=1"), "\"'\r=1\"");
+  EXPECT_EQ(csv_field("-"), "\"'-\"");
+  // numbers stay numbers
+  EXPECT_EQ(csv_field("-1.5e-3"), "-1.5e-3");
+  EXPECT_EQ(csv_field("-0"), "-0");
+  EXPECT_EQ(csv_field("-inf"), "-inf");
+  EXPECT_EQ(csv_field("-nan"), "-nan");
+  EXPECT_EQ(csv_field("1e+05"), "1e+05");
+  // only the first character counts
+  EXPECT_EQ(csv_field("a=b"), "a=b");
+}
+
 TEST(Fnv1a, PublishedVectorsAndTheFingerprintBasis) {
   // Fowler-Noll-Vo test vectors for FNV-1a 64.
   EXPECT_EQ(fnv1a64(""), 0xcbf29ce484222325ull);

@@ -98,5 +98,43 @@ TEST(PlotScripts, OneScriptDrawsThePngAndTheSameSvg) {
   }
 }
 
+// gnuplot_quote is the one way text enters a script: no text can leave the
+// string or its line.
+TEST(PlotScripts, GnuplotQuoteKeepsEveryTextOneStringOnItsLine) {
+  EXPECT_EQ(gnuplot_quote("a\nsystem(\"id\")"), "'a system(\"id\")'");
+  EXPECT_EQ(gnuplot_quote("cr\rlf\ntab\tvt\vff\fesc\x1b" "del\x7f" "nul"), "'cr lf tab vt ff esc del nul'");
+  EXPECT_EQ(gnuplot_quote(std::string("a\0b", 3)), "'a b'");
+  EXPECT_EQ(gnuplot_quote("`id` @m \\"), "'`id` @m \\'");  // inert inside single quotes (next test)
+}
+
+// Every script a run writes, with a title that tries each way to run a
+// command: a line break, CR, backquotes, an @macro. gnuplot (when
+// installed) runs each script in a scratch folder; no command may run.
+TEST(PlotScripts, NoTitleRunsACommandInAnyScript) {
+  const std::string dir = test_support::scratch_dir("hostile_titles");
+  const std::string title = "drive\nsystem('touch owned_nl')\rsystem('touch owned_cr')\n`touch owned_bq` @m it's";
+  const std::vector<std::pair<std::string, std::string>> scripts = {
+      {"wear_profile.gp", wear_profile_gnuplot(title)},
+      {"life_histogram.gp", life_histogram_gnuplot(title)},
+      {"reliability.gp", reliability_gnuplot(title)},
+      {"stiffness.gp", stiffness_gnuplot(StiffnessCurve{}, title, "s\nsystem('touch owned_csv').csv", "s.png.tmp")}};
+  for (const auto& [name, script] : scripts) {
+    for (std::size_t at = script.find('\n'); at != std::string::npos; at = script.find('\n', at + 1)) {
+      EXPECT_NE(script.compare(at + 1, 6, "system"), 0) << name << ": a line starts a command\n" << script;
+    }
+    EXPECT_EQ(script.find('\r'), std::string::npos) << name;
+    std::ofstream(dir + "/" + name) << "m = \"system('touch owned_macro')\"\n" << script;
+  }
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot is not installed";
+  for (const auto& [name, script] : scripts) {
+    // the data files are missing: gnuplot stops at the first plot, after the titles
+    const std::string command = "cd '" + dir + "' && gnuplot " + name + " >/dev/null 2>&1";
+    EXPECT_GE(std::system(command.c_str()), 0);
+  }
+  for (const char* owned : {"owned_nl", "owned_cr", "owned_bq", "owned_macro", "owned_csv"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + owned)) << owned << ": gnuplot ran a command from a title";
+  }
+}
+
 }  // namespace
 }  // namespace rackopt

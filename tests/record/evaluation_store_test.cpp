@@ -726,3 +726,34 @@ TEST_F(StoreTest, KillNineLosesOnlyTheUncommittedTailAndResumeCompletes) {
 
 }  // namespace
 }  // namespace rackopt::record
+
+namespace rackopt::record {
+namespace {
+
+// A name with a double quote stays one identifier: SQLite makes exactly one
+// column of it, named as given, and the text after the quote is no SQL.
+TEST(SqlIdentifier, AQuoteInsideANameCannotEndTheIdentifier) {
+  EXPECT_EQ(sql_identifier("plain"), "\"plain\"");
+  EXPECT_EQ(sql_identifier("a\"b"), "\"a\"\"b\"");
+  EXPECT_THROW(sql_identifier(std::string("a\0b", 3)), std::invalid_argument);
+
+  const std::string hostile = "x\" REAL); DROP TABLE t; CREATE TABLE owned(\"y";
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(":memory:", &db), SQLITE_OK);
+  const std::string ddl = "CREATE TABLE t(" + sql_identifier(hostile) + " REAL)";
+  ASSERT_EQ(sqlite3_exec(db, ddl.c_str(), nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(db);
+  std::vector<std::string> columns, tables;
+  sqlite3_stmt* s = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT name FROM pragma_table_info('t')", -1, &s, nullptr), SQLITE_OK);
+  while (sqlite3_step(s) == SQLITE_ROW) columns.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+  sqlite3_finalize(s);
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT name FROM sqlite_master WHERE type = 'table'", -1, &s, nullptr), SQLITE_OK);
+  while (sqlite3_step(s) == SQLITE_ROW) tables.emplace_back(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)));
+  sqlite3_finalize(s);
+  sqlite3_close(db);
+  EXPECT_EQ(columns, std::vector<std::string>{hostile});
+  EXPECT_EQ(tables, std::vector<std::string>{"t"});
+}
+
+}  // namespace
+}  // namespace rackopt::record

@@ -20,13 +20,6 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-// A title for a gnuplot single-quoted string: a quote is doubled.
-std::string quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
 bool inside(const ShapeWindow& w, Point2 p) { return p.x >= w.x0 && p.x <= w.x1 && p.y >= w.y0 && p.y <= w.y1; }
 
 // The corner-to-corner edges of a body's triangles (straight-sided: the
@@ -49,7 +42,7 @@ ShapeWindow grown(const ShapeWindow& w, double margin) { return {w.x0 - margin, 
 
 void axes(std::ostringstream& o, const ShapeWindow& w, const std::string& title, const std::string& png_name) {
   o << gnuplot_terminal(png_name, 1200, 1000);
-  o << "set title " << quoted(title) << "\n";
+  o << "set title " << gnuplot_quote(title) << "\n";
   o << "set size ratio -1\nset clip two\nset clip one\nunset key\n";
   o << "set xlabel 'x along the rack [mm]'\nset ylabel 'y [mm] (rack datum at 0)'\n";
   o << "set xrange [" << fmt("%.6f", w.x0 * 1e3) << ":" << fmt("%.6f", w.x1 * 1e3) << "]\n";
@@ -148,7 +141,7 @@ std::string deformed_gnuplot(const DeformedShape& shape, const std::string& titl
        title + ": FE deformed shape at X = " + fmt("%.6g", shape.travel) + " m, level " + std::to_string(shape.level) +
            ", hub turned " + fmt("%.4g", shape.hub_rotation * 1e3) + " mrad",
        png_name);
-  o << "set label 1 " << quoted("displacements drawn x " + fmt("%.4g", s.factor) + ": the largest in view, " +
+  o << "set label 1 " << gnuplot_quote("displacements drawn x " + fmt("%.4g", s.factor) + ": the largest in view, " +
                                 fmt("%.4g", s.largest * 1e6) + " um, as " +
                                 fmt("%.3g", kDrawnDisplacementPerModule * shape.module * 1e3) + " mm (" +
                                 fmt("%.3g", 100 * kDrawnDisplacementPerModule) + " % of the module)")

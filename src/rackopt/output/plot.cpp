@@ -37,6 +37,14 @@ std::string shell_quote(const std::string& text) {
 std::string gnuplot_quote(const std::string& text) {
   std::string out = "'";
   for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      // A line break ends the statement and the rest of the line would run
+      // as gnuplot commands (`system(...)`); no control character belongs
+      // in a title, so each one becomes a space.
+      out += ' ';
+      continue;
+    }
     if (c == '\'') out += '\'';
     out += c;
   }

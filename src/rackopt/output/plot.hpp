@@ -63,8 +63,14 @@ double plot_time_limit_seconds();
 // `text` quoted for /bin/sh as one word.
 std::string shell_quote(const std::string& text);
 
-// `text` as a gnuplot single-quoted string (a quote inside is doubled), so a
-// problem or study name with an apostrophe cannot break a plot script.
+// `text` as one gnuplot single-quoted string, the only way user text (study
+// and problem names, labels, file names) enters a plot script: a quote
+// inside is doubled, and every control character (line breaks, tab, CR,
+// escape, DEL) becomes a space, so the string stays on its statement's line
+// and no text can start a command of its own. Inside single quotes gnuplot
+// (5.4, checked by tests/output/plot_scripts_test.cpp with the real program)
+// does no backquote command substitution, no `@` macro expansion and no
+// backslash escapes: those characters are kept as they are and shown.
 std::string gnuplot_quote(const std::string& text);
 
 }  // namespace rackopt

@@ -104,7 +104,6 @@ std::vector<std::string> split_models(const std::string& text) {
   return out;
 }
 
-std::string quoted(const std::string& name) { return "\"" + name + "\""; }
 
 // --- little-endian byte encoding of numbers (bit exact, portable files) -----
 template <class T>
@@ -244,6 +243,16 @@ std::string column_name(const std::string& name) {
   out.erase(0, lead);
   if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "c_" + out;
   return out;
+}
+
+std::string sql_identifier(const std::string& name) {
+  if (name.find('\0') != std::string::npos) throw std::invalid_argument("an SQL name cannot hold a NUL byte");
+  std::string out = "\"";
+  for (char c : name) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
 }
 
 struct EvaluationStore::Impl {
@@ -410,7 +419,7 @@ struct EvaluationStore::Impl {
   // in value_columns. Returns its name.
   std::string add_column(const std::string& source, const char* kind) {
     const std::string name = unused_column(source);
-    exec(("ALTER TABLE evaluation_records ADD COLUMN " + quoted(name) + " REAL").c_str(), "adding a value column");
+    exec(("ALTER TABLE evaluation_records ADD COLUMN " + sql_identifier(name) + " REAL").c_str(), "adding a value column");
     Stmt s = prepare("INSERT INTO value_columns(name, source, kind, unit, position) "
                      "VALUES(?1, ?2, ?3, ?4, (SELECT count(*) FROM value_columns))");
     bind_text(s.get(), 1, name);
@@ -427,8 +436,8 @@ struct EvaluationStore::Impl {
   void rebuild_view() {
     std::string sql = "DROP VIEW IF EXISTS evaluations; CREATE VIEW evaluations AS SELECT id, phase, ok, message, "
                       "gradient_probe, seconds";
-    for (const auto& c : variable_columns) sql += ", " + quoted(c);
-    for (const auto& c : metric_columns) sql += ", " + quoted(c);
+    for (const auto& c : variable_columns) sql += ", " + sql_identifier(c);
+    for (const auto& c : metric_columns) sql += ", " + sql_identifier(c);
     sql += ", models, warnings FROM evaluation_records";
     exec(sql.c_str(), "creating the evaluations view");
   }
@@ -440,7 +449,7 @@ struct EvaluationStore::Impl {
     int k = kRecordParams;
     for (const auto* columns : {&variable_columns, &metric_columns}) {
       for (const auto& c : *columns) {
-        sql += ", " + quoted(c);
+        sql += ", " + sql_identifier(c);
         values += ",?" + std::to_string(++k);
       }
     }
@@ -463,7 +472,7 @@ struct EvaluationStore::Impl {
     int k = 0;
     for (const auto* columns : {&variable_columns, &metric_columns})
       for (const auto& c : *columns) {
-        sql += (k ? ", " : "") + quoted(c);
+        sql += (k ? ", " : "") + sql_identifier(c);
         sql += " = ?" + std::to_string(++k);
       }
     if (k == 0) return;

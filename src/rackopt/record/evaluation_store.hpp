@@ -44,6 +44,13 @@ namespace rackopt::record {
 // view's own columns.
 std::string column_name(const std::string& name);
 
+// `name` as one SQL identifier: in double quotes, a double quote inside
+// doubled (SQLite's rule), so no name can end the identifier and add SQL of
+// its own. The only way a name enters the store's SQL text; values are
+// always bound parameters. Throws std::invalid_argument for a NUL byte (it
+// would cut the statement short).
+std::string sql_identifier(const std::string& name);
+
 // One evaluation as recorded. Every double round-trips bit for bit (stored as
 // raw little-endian IEEE-754 bytes), including -0.0, denormals, infinities and
 // NaN payloads inside objectives/constraints/metrics; `seconds` is stored as

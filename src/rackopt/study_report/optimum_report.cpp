@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "rackopt/metrics/metric_registry.hpp"
+#include "rackopt/study_report/markdown_text.hpp"
 #include "rackopt/study/study_kind_rules.hpp"
 #include "rackopt/study_report/discretization_report.hpp"
 #include "rackopt/study_report/study_report.hpp"
@@ -90,8 +91,8 @@ std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r
          "combinations it never visited are not listed.\n\n";
   o << "| combination | status | feasible |";
   for (const auto& v : spec.variables)
-    if (!v.discrete()) o << " `" << v.key << "` |";
-  for (const auto& ob : spec.objectives) o << " " << ob.label << " |";
+    if (!v.discrete()) o << " " << markdown_code_cell(v.key) << " |";
+  for (const auto& ob : spec.objectives) o << " " << markdown_text(ob.label) << " |";
   o << " note |\n|---|---|---|";
   for (const auto& v : spec.variables)
     if (!v.discrete()) o << "---|";
@@ -100,7 +101,7 @@ std::string per_combination_markdown(const StudySpec& spec, const StudyResult& r
   for (const CombinationOutcome& c : r.per_combination) {
     const DesignResult* d = c.best ? &*c.best : c.least_infeasible ? &*c.least_infeasible : nullptr;
     const bool is_best = c.best && r.best && c.best->x == r.best->x;
-    o << "| " << (is_best ? "**" + c.label + "**" : c.label) << " | " << combination_status_text(c) << " | "
+    o << "| " << (is_best ? "**" + markdown_text(c.label) + "**" : markdown_text(c.label)) << " | " << combination_status_text(c) << " | "
       << (c.best ? "yes" : d ? "no (least infeasible shown)" : "no design") << " |";
     for (std::size_t i = 0; i < spec.variables.size(); ++i) {
       if (spec.variables[i].discrete()) continue;
@@ -131,7 +132,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
       const double delta = 0.01 * std::abs(c.bound) * (c.side == "max" ? -1.0 : 1.0);
       sens = metric_display(e.objective, *c.bound_sensitivity * delta);
     }
-    o << "| " << c.label << " | " << metric_display(c.label, c.value) << " | " << c.side << " "
+    o << "| " << markdown_text(c.label) << " | " << metric_display(c.label, c.value) << " | " << c.side << " "
       << metric_display(c.label, c.bound) << " | " << format_number(100 * c.relative_slack, 3) << " % | "
       << (c.active ? "**active**" : "") << " | " << sens << " |\n";
   }
@@ -142,7 +143,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
   o << variables_at_bounds_markdown(spec, e);
   if (!e.gradient_variables.empty()) {
     o << "| variable | difference | d " << e.objective << " |";
-    for (const ConstraintStatus& c : e.constraints) o << " d " << c.label << " |";
+    for (const ConstraintStatus& c : e.constraints) o << " d " << markdown_text(c.label) << " |";
     o << "\n|---|---|---|";
     for (std::size_t i = 0; i < e.constraints.size(); ++i) o << "---|";
     o << "\n";
@@ -153,7 +154,7 @@ std::string explanation_markdown(const StudySpec& spec, const StudyResult& r) {
       std::string diff;
       for (const VariableStatus& s : e.variables)
         if (s.key == e.gradient_variables[q]) diff = s.difference;
-      o << "| `" << e.gradient_variables[q] << "` (per " << per << ") | " << diff << " | "
+      o << "| " << markdown_code_cell(e.gradient_variables[q]) << " (per " << per << ") | " << diff << " | "
         << (e.objective_gradient.size() > q && e.objective_gradient[q]
                 ? metric_display(e.objective, *e.objective_gradient[q] * f)
                 : "failed")

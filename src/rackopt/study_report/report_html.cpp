@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rackopt/study_report/markdown_text.hpp"
+
 namespace rackopt::study_report {
 namespace {
 
@@ -221,6 +223,12 @@ std::string report_html(const std::string& markdown, const std::string& title,
   cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
   const std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
   if (!doc) throw std::runtime_error("report.html: cmark-gfm could not parse report.md");
+
+  // report.md writes user text escaped and a description filtered
+  // (markdown_text.hpp); the page checks its links once more, so that
+  // whatever Markdown it is given, it carries no javascript:, data: or other
+  // link that is not relative, http(s) or mailto.
+  unlink_forbidden_destinations(doc.get());
 
   // Nodes to change, collected first: the tree must not change under the iterator.
   std::vector<cmark_node*> raw_html, images;

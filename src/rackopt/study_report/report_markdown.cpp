@@ -12,6 +12,7 @@
 #include "rackopt/study_report/display_units.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
 #include "rackopt/study_report/front_quality_report.hpp"
+#include "rackopt/study_report/markdown_text.hpp"
 #include "rackopt/study_report/optimum_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
 #include "rackopt/study_report/warnings_report.hpp"
@@ -24,25 +25,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Text inside a table cell: a '|' would end the cell, a newline the row.
-std::string md_cell(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') {
-      out += "\\|";
-    } else if (c == '\n') {
-      out += ' ';
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+// Text inside a table cell or on one line: markdown_text escapes the '|'
+// that would end the cell and the line break that would end the row.
+std::string md_cell(const std::string& s) { return markdown_text(s); }
 
 void md_design(std::ostringstream& o, const StudySpec& spec, const DesignResult& d) {
   o << "| | |\n|---|---|\n";
   for (std::size_t i = 0; i < spec.variables.size() && i < d.x.size(); ++i) {
-    o << "| `" << spec.variables[i].key << "` | " << md_cell(variable_display(spec.variables[i], d.x[i])) << " |\n";
+    o << "| " << markdown_code_cell(spec.variables[i].key) << " | " << md_cell(variable_display(spec.variables[i], d.x[i])) << " |\n";
   }
   for (std::size_t i = 0; i < d.metric_labels.size(); ++i) {
     const bool ok = i < d.metric_ok.size() && d.metric_ok[i] && i < d.metric_values.size();
@@ -67,19 +57,19 @@ std::string link_target(const fs::path& out_dir, const std::string& path) {
 std::string report_markdown(const StudySpec& spec, const StudyResult& result, const ReportFiles& files,
                             const std::vector<std::string>& warnings, const fs::path& out_dir) {
   std::ostringstream o;
-  o << "# Study: " << spec.name << "\n\n";
-  if (!trim(spec.description).empty()) o << trim(spec.description) << "\n\n";
+  o << "# Study: " << markdown_text(spec.name) << "\n\n";
+  if (!trim(spec.description).empty()) o << markdown_description(trim(spec.description)) << "\n\n";
   o << "- kind: " << kind_name(spec.kind) << "\n";
-  if (!spec.file.empty()) o << "- study file: `" << spec.file << "`\n";
-  if (!spec.problem_path.empty()) o << "- problem: `" << spec.problem_path << "`\n";
-  for (const auto& ov : spec.problem_overrides) o << "- problem override: `" << ov << "`\n";
+  if (!spec.file.empty()) o << "- study file: " << markdown_code(spec.file) << "\n";
+  if (!spec.problem_path.empty()) o << "- problem: " << markdown_code(spec.problem_path) << "\n";
+  for (const auto& ov : spec.problem_overrides) o << "- problem override: " << markdown_code(ov) << "\n";
   o << "- seed: " << spec.seed << "\n";
   if (spec.kind == StudyKind::kOptimize || spec.kind == StudyKind::kPareto) {
-    o << "- solver: " << spec.solver.library;
+    o << "- solver: " << md_cell(spec.solver.library);
     const solvers::SolverBackend* backend = solvers::find_solver_backend(spec.solver.library);
-    if (backend && !backend->algorithms().empty()) o << " " << spec.solver.algorithm;
-    for (const auto& [key, value] : spec.solver.options) o << ", " << key << " " << format_number(value, 6);
-    if (!spec.solver.local_algorithm.empty()) o << " (local " << spec.solver.local_algorithm << ")";
+    if (backend && !backend->algorithms().empty()) o << " " << md_cell(spec.solver.algorithm);
+    for (const auto& [key, value] : spec.solver.options) o << ", " << md_cell(key) << " " << format_number(value, 6);
+    if (!spec.solver.local_algorithm.empty()) o << " (local " << md_cell(spec.solver.local_algorithm) << ")";
     o << ", at most " << spec.solver.max_evaluations << " evaluations";
     if (spec.solver.starts > 1) o << ", " << spec.solver.starts << " starts";
     o << "\n";
@@ -106,30 +96,31 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     for (const auto& v : spec.variables) {
       std::string values;
       for (double x : v.values) values += (values.empty() ? "" : ", ") + variable_display(v, x);
-      o << "| `" << v.key << "` | " << variable_display(v, v.lower) << " | " << variable_display(v, v.upper)
-        << " | " << (v.start ? variable_display(v, *v.start) : "–") << " | " << (values.empty() ? "continuous" : values)
+      o << "| " << markdown_code_cell(v.key) << " | " << md_cell(variable_display(v, v.lower)) << " | "
+        << md_cell(variable_display(v, v.upper)) << " | " << (v.start ? md_cell(variable_display(v, *v.start)) : "–")
+        << " | " << (values.empty() ? "continuous" : md_cell(values))
         << " |\n";
     }
     o << "\n";
   }
   if (!spec.objectives.empty()) {
     o << "## Objectives\n\n";
-    for (const auto& ob : spec.objectives) o << "- " << (ob.maximize ? "maximize " : "minimize ") << ob.label << "\n";
+    for (const auto& ob : spec.objectives) o << "- " << (ob.maximize ? "maximize " : "minimize ") << md_cell(ob.label) << "\n";
     o << "\n";
   }
   if (!spec.constraints.empty()) {
     o << "## Constraints\n\n";
-    for (const auto& c : spec.constraints) o << "- " << bound_text(c) << "\n";
+    for (const auto& c : spec.constraints) o << "- " << md_cell(bound_text(c)) << "\n";
     o << "\n";
   }
 
   o << "## Outcome\n\n";
-  o << "**Status: " << to_string(result.status) << "**: " << status_message(spec, result) << "\n\n";
+  o << "**Status: " << to_string(result.status) << "**: " << md_cell(status_message(spec, result)) << "\n\n";
   if (!result.solver_message.empty()) o << "Solver: " << md_cell(result.solver_message) << "\n\n";
   if (spec.kind == StudyKind::kPareto && !result.front.empty()) {
     o << "### Pareto front (" << result.front.size() << " points)\n\n| # | chosen |";
-    for (const auto& v : spec.variables) o << " `" << v.key << "` |";
-    for (const auto& ob : spec.objectives) o << " " << ob.label << " |";
+    for (const auto& v : spec.variables) o << " " << markdown_code_cell(v.key) << " |";
+    for (const auto& ob : spec.objectives) o << " " << md_cell(ob.label) << " |";
     o << "\n|---|---|";
     for (std::size_t i = 0; i < spec.variables.size() + spec.objectives.size(); ++i) o << "---|";
     o << "\n";
@@ -154,13 +145,13 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     }
   } else if (result.best) {
     const bool single = spec.kind == StudyKind::kEvaluate || spec.kind == StudyKind::kReliability;
-    o << (single ? "### Design" : "### Best design") << (result.best->label.empty() ? "" : " (" + result.best->label + ")") << "\n\n";
+    o << (single ? "### Design" : "### Best design") << (result.best->label.empty() ? "" : " (" + md_cell(result.best->label) + ")") << "\n\n";
     md_design(o, spec, *result.best);
     o << explanation_markdown(spec, result) << per_combination_markdown(spec, result);
   }
   if (result.least_infeasible) {
     o << "### Least infeasible design"
-      << (result.least_infeasible->label.empty() ? "" : " (" + result.least_infeasible->label + ")") << "\n\n";
+      << (result.least_infeasible->label.empty() ? "" : " (" + md_cell(result.least_infeasible->label) + ")") << "\n\n";
     md_design(o, spec, *result.least_infeasible);
   }
   if (spec.kind == StudyKind::kSweep) {
@@ -191,7 +182,8 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
   for (const auto& [role, path] : files.entries) {
     if (role == "report_md" || !fs::exists(path)) continue;
     const std::string target = link_target(out_dir, path);
-    o << "- [" << fs::path(path).filename().string() << "](" << target << "): " << role << "\n";
+    o << "- [" << md_cell(fs::path(path).filename().string()) << "](" << markdown_link_destination(target)
+      << "): " << md_cell(role) << "\n";
   }
   o << "\n";
   bool any_plot = false;
@@ -200,7 +192,7 @@ std::string report_markdown(const StudySpec& spec, const StudyResult& result, co
     if (!any_plot) o << "## Plots\n\n";
     any_plot = true;
     const PlotCaption c = plot_caption(role, spec);
-    o << "![" << md_cell(c.title) << "](" << link_target(out_dir, path) << ")\n\n";
+    o << "![" << md_cell(c.title) << "](" << markdown_link_destination(link_target(out_dir, path)) << ")\n\n";
     if (!c.caption.empty()) o << "*" << md_cell(c.caption) << "*\n\n";
   }
   return o.str();

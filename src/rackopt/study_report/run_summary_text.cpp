@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "rackopt/core/text.hpp"
 #include "rackopt/fe/fe_comparison_report.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/study_report/result_facts.hpp"
@@ -35,7 +36,7 @@ void design_lines(std::ostringstream& o, const StudySpec& spec, const DesignResu
 std::string study_summary_text(const StudySpec& spec, const StudyResult& r, const StudyReport& rep,
                                const std::string& out_dir) {
   std::ostringstream o;
-  o << "study " << spec.name << " (" << kind_name(spec.kind) << "): " << to_string(r.status) << "\n";
+  o << "study " << one_line(spec.name) << " (" << kind_name(spec.kind) << "): " << to_string(r.status) << "\n";
   o << "  " << status_message(spec, r) << "\n";
   if (spec.kind == StudyKind::kPareto && !r.front.empty()) {
     o << "  Pareto front, " << r.front.size() << " points:\n";

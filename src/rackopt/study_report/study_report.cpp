@@ -16,6 +16,7 @@
 #include "rackopt/study_report/design_tables.hpp"
 #include "rackopt/study_report/fe_verification_report.hpp"
 #include "rackopt/study_report/front_quality_report.hpp"
+#include "rackopt/study_report/markdown_text.hpp"
 #include "rackopt/study_report/report_html.hpp"
 #include "rackopt/study_report/report_markdown.hpp"
 #include "rackopt/study_report/study_plots.hpp"
@@ -137,7 +138,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
       std::ifstream in(svg, std::ios::binary);
       std::ostringstream text;
       text << in.rdbuf();
-      svg_by_target[link_target(dir, entry.second)] = inline_svg(text.str(), "plot" + std::to_string(++plots) + "-");
+      svg_by_target[markdown_link_destination(link_target(dir, entry.second))] = inline_svg(text.str(), "plot" + std::to_string(++plots) + "-");
     }
   }
   for (const auto& w : plot_warnings) rep.warnings.push_back(w);
