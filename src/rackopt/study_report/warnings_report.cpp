@@ -4,6 +4,9 @@
 #include <set>
 #include <sstream>
 
+#include "rackopt/core/text.hpp"
+#include "rackopt/study_report/markdown_text.hpp"
+
 namespace rackopt::study_report {
 
 using study::WarningGroup;
@@ -11,21 +14,6 @@ using study::WarningTally;
 using study::warning_kind;
 
 namespace {
-
-// Markdown text that shows as written: model messages carry '*', '_',
-// '<', '|' and the like, which must not turn into emphasis, HTML or cells.
-std::string md_text(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '\n') {
-      out += ' ';
-      continue;
-    }
-    if (std::string_view("\\`*_[]<>|#!~").find(c) != std::string_view::npos) out += '\\';
-    out += c;
-  }
-  return out;
-}
 
 bool best_gave(const ReportWarnings& w, const WarningGroup& g) {
   return std::any_of(w.best.begin(), w.best.end(), [&](const std::string& b) { return warning_kind(b) == g.kind; });
@@ -119,7 +107,7 @@ std::string warnings_markdown(const ReportWarnings& w) {
     o << "## Warnings of the " << w.design;
     if (w.best_evaluation > 0) o << " (evaluation " << w.best_evaluation << ")";
     o << "\n\n";
-    for (const std::string& m : w.best) o << "- " << md_text(m) << "\n";
+    for (const std::string& m : w.best) o << "- " << markdown_text(m) << "\n";
     o << "\n";
   }
   if (!others.empty()) {
@@ -129,11 +117,11 @@ std::string warnings_markdown(const ReportWarnings& w) {
       o << "Each kind once, its numbers shown as …, with the designs that gave it (their `id` in "
            "evaluations.csv) and one of its messages.\n\n";
     for (const WarningGroup& g : others) {
-      o << "- " << (g.messages > 1 ? "**" + md_text(g.kind) + "**" : md_text(g.example));
+      o << "- " << (g.messages > 1 ? "**" + markdown_text(g.kind) + "**" : markdown_text(g.example));
       const std::string origin = origin_text(g, 10);
-      if (!origin.empty()) o << " — " << md_text(origin);
+      if (!origin.empty()) o << " — " << markdown_text(origin);
       o << "\n";
-      if (g.messages > 1) o << "  - for example: " << md_text(g.example) << "\n";
+      if (g.messages > 1) o << "  - for example: " << markdown_text(g.example) << "\n";
     }
     o << "\n";
   }
@@ -149,13 +137,13 @@ std::string warnings_text(const ReportWarnings& w, std::size_t max_groups) {
     o << "  warnings of the " << w.design;
     if (w.best_evaluation > 0) o << " (evaluation " << w.best_evaluation << ")";
     o << ":\n";
-    for (const std::string& m : w.best) o << "    " << m << "\n";
+    for (const std::string& m : w.best) o << "    " << one_line(m) << "\n";
   }
   if (!others.empty()) {
     o << (w.best.empty() ? "  warnings" : "  other warnings of the run") << (any_grouped(others) ? ", by kind" : "")
       << ":\n";
     const std::size_t shown = std::min(max_groups, others.size());
-    for (std::size_t i = 0; i < shown; ++i) o << "    " << warning_group_text(others[i], 5, false) << "\n";
+    for (std::size_t i = 0; i < shown; ++i) o << "    " << one_line(warning_group_text(others[i], 5, false)) << "\n";
     if (others.size() > shown)
       o << "    ... and " << others.size() - shown << " more kinds (report.md, summary.json)\n";
   }
