@@ -7,6 +7,7 @@
 // output-folder conflict, 130 stopped by SIGINT (Ctrl-C) or SIGTERM. With
 // --json exactly one JSON object goes to stdout (on every error too) and
 // everything meant for people goes to stderr.
+#include <csignal>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -108,6 +109,12 @@ int main(int argc, char** argv) {
   rackopt::install_interrupt_handlers(
       args.command == "run" ? "\nrackopt: stopping after the current evaluation (Ctrl-C again to quit at once)...\n"
                             : "\nrackopt: stopping (Ctrl-C again to quit at once)...\n");
+#ifdef RACKOPT_WITH_MPI
+  // Rank 0 under mpirun: SIGUSR1 is a stop too. mpirun forwards it to every
+  // rank (the workers ignore it) and then ends with rank 0's status, 130;
+  // a SIGINT or SIGTERM to mpirun aborts the job with OpenMPI's status 1.
+  if (mpi_job) rackopt::also_stop_on(SIGUSR1);
+#endif
   if (args.json) {
     // What an at-once end (second Ctrl-C) prints: the same error object.
     rackopt::JsonWriter j;

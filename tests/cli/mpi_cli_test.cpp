@@ -222,4 +222,26 @@ TEST(MpiCli, SigintToMpirunLeavesTheWholeStoppedReport) {
   EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
 }
 
+// The stop to send mpirun itself: SIGUSR1, which mpirun forwards to every
+// rank (a SIGINT or SIGTERM it keeps for its own abort, exit status 1).
+// Rank 0 takes it as its stop, the workers ignore it, and mpirun ends with
+// rank 0's status, 130, after the whole stopped report.
+TEST(MpiCli, SigusrOneToMpirunStopsEveryRankWithTheStoppedReportAndExit130) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_sigusr1_mpirun"), printed = scratch_dir("mpi_sigusr1_json") + "/stdout.json";
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const Shell m = shell(kMpiEnv + " " + kMpirun + " -np 2 " + std::string(RACKOPT_CLI) +
+                            " run studies/spall_severity_sweep.yaml --set sweep.levels=40 --json --out " + out + " >" +
+                            printed + " & job=$!; " + "for i in $(seq 1200); do [ -s " + wal +
+                            " ] && break; sleep 0.05; done; sleep 1; " + "kill -USR1 $job; wait $job; echo mpirun_exit=$?",
+                        180);
+  EXPECT_NE(m.output.find("mpirun_exit=130\n"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_LT(summary["evaluations"].get<long>(), 6400);
+  EXPECT_EQ(nlohmann::json::parse(read_text(printed)), summary);
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+}
+
 }  // namespace

@@ -96,6 +96,27 @@ TEST(Interrupt, EmbeddedHandlersOnlyAskToStopAndGiveTheOldHandlerBack) {
   EXPECT_EQ(child_exit(pid), 0);
 }
 
+// Rank 0 under mpirun: SIGUSR1 (what mpirun forwards) is a stop like the
+// others, named in the message, and a second one ends at once.
+TEST(Interrupt, AnAddedStopSignalAsksToStopAndASecondEndsAtOnce) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    install_interrupt_handlers();
+    also_stop_on(SIGUSR1);
+    raise(SIGUSR1);
+    if (!stop_requested() || stop_signal() != SIGUSR1) _exit(3);
+    try {
+      throw_if_stop_requested("work");
+      _exit(4);
+    } catch (const Interrupted& e) {
+      if (std::string(e.what()) != "work: stopped by SIGUSR1 (forwarded by mpirun)") _exit(5);
+    }
+    raise(SIGUSR1);
+    _exit(6);
+  }
+  EXPECT_EQ(child_exit(pid), kInterruptedExit);
+}
+
 TEST(Interrupt, RequestAndClear) {
   clear_stop_request();
   EXPECT_FALSE(stop_requested());

@@ -56,10 +56,13 @@ extern "C" void on_stop_signal(int sig) {
     if (n > 0) {
       static const char sigint[] = "SIGINT (Ctrl-C)";
       static const char sigterm[] = "SIGTERM";
+      static const char sigusr1[] = "SIGUSR1 (forwarded by mpirun)";
       const std::size_t split = std::min(g_output_split, n);
       say_to(STDOUT_FILENO, g_output, split);
       if (sig == SIGINT) {
         say_to(STDOUT_FILENO, sigint, sizeof sigint - 1);
+      } else if (sig == SIGUSR1) {
+        say_to(STDOUT_FILENO, sigusr1, sizeof sigusr1 - 1);
       } else {
         say_to(STDOUT_FILENO, sigterm, sizeof sigterm - 1);
       }
@@ -89,6 +92,14 @@ void install_handlers(const std::string& notice, struct sigaction* saved) {
 
 void install_interrupt_handlers(const std::string& notice) { install_handlers(notice, nullptr); }
 
+void also_stop_on(int sig) {
+  struct sigaction sa{};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  sa.sa_flags = SA_RESTART;
+  ::sigaction(sig, &sa, nullptr);
+}
+
 EmbeddedStopHandlers::EmbeddedStopHandlers(const std::string& notice) {
   g_embedded.store(true);
   install_handlers(notice, saved_);
@@ -109,6 +120,7 @@ std::string stop_reason() {
   switch (g_signal.load()) {
     case SIGINT: return "SIGINT (Ctrl-C)";
     case SIGTERM: return "SIGTERM";
+    case SIGUSR1: return "SIGUSR1 (forwarded by mpirun)";
     default: return "a stop request";
   }
 }

@@ -38,11 +38,18 @@ class Interrupted : public std::runtime_error {
 // stderr by the first signal (e.g. "stopping after the current evaluation").
 void install_interrupt_handlers(const std::string& notice = "");
 
+// Makes `sig` a stop signal too, handled as SIGINT and SIGTERM are (call
+// after install_interrupt_handlers). Rank 0 under mpirun: SIGUSR1, which
+// mpirun forwards to every rank, whereas a SIGINT or SIGTERM to mpirun
+// aborts the job with OpenMPI's own exit status (docs/output.md).
+void also_stop_on(int sig);
+
 // True once SIGINT or SIGTERM arrived (or request_stop() was called).
 bool stop_requested();
-// The signal that asked to stop (SIGINT, SIGTERM), 0 when none did.
+// The signal that asked to stop (SIGINT, SIGTERM, one of also_stop_on()),
+// 0 when none did.
 int stop_signal();
-// "SIGINT (Ctrl-C)", "SIGTERM" or "a stop request".
+// "SIGINT (Ctrl-C)", "SIGTERM", "SIGUSR1 (forwarded by mpirun)" or "a stop request".
 std::string stop_reason();
 // Sets the stop request as a first signal would (tests, embedding programs).
 void request_stop();

@@ -189,6 +189,16 @@ MpiJob::MpiJob(int* argc, char*** argv) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   current_job = this;
+  // Rank 0 owns the stop: mpirun sends SIGTERM to every rank when it is
+  // interrupted and forwards SIGUSR1 to every rank, and a worker that died
+  // of either would take rank 0 down before its stopped report is written.
+  // A worker finishes the batch it has and ends on rank 0's stop command;
+  // it ignores them from here on, also while it loads the study.
+  if (rank_ > 0) {
+    ::signal(SIGINT, SIG_IGN);
+    ::signal(SIGTERM, SIG_IGN);
+    ::signal(SIGUSR1, SIG_IGN);
+  }
 }
 
 MpiJob::~MpiJob() {
@@ -234,12 +244,6 @@ void MpiJob::stop_workers() {
 }
 
 int MpiJob::serve(const study::StudyProblem* problem, const std::string& why_not, unsigned threads) {
-  // Rank 0 owns the stop: mpirun sends SIGTERM to every rank when it is
-  // interrupted, and a worker that died of it would take rank 0 down before
-  // its stopped report is written. A worker finishes the batch it has and
-  // ends on rank 0's stop command.
-  ::signal(SIGINT, SIG_IGN);
-  ::signal(SIGTERM, SIG_IGN);
   send_bytes(problem ? std::string() : (why_not.empty() ? std::string("no study to serve") : why_not), 0, kReadyTag);
   const unsigned pool = resolve_threads(threads);
   for (;;) {

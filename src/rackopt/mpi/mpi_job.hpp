@@ -36,7 +36,8 @@ class MpiJob {
   // launcher's environment); then a job must be made before anything else.
   static bool launched();
 
-  // MPI_Init_thread (only the main thread calls MPI).
+  // MPI_Init_thread (only the main thread calls MPI). Ranks > 0 ignore
+  // SIGINT, SIGTERM and SIGUSR1 from here on: rank 0 owns the stop.
   MpiJob(int* argc, char*** argv);
   // Rank 0: stops the workers (if not yet done); every rank: MPI_Finalize.
   ~MpiJob();
