@@ -5,8 +5,8 @@
 //  * The first SIGINT/SIGTERM sets a process-wide stop request. Long work
 //    polls stop_requested() (a study between evaluations, the Monte Carlo
 //    of a life at R between samples and through its distribution fits, a
-//    plot while gnuplot runs) and ends
-//    cleanly; the command line then exits kInterruptedExit.
+//    plot while gnuplot runs) and ends cleanly; the command line then exits
+//    kInterruptedExit.
 //  * The handler itself kills the process group of the registered child
 //    (gnuplot), so a hung child cannot keep the program alive.
 //  * A second signal ends the process at once: the registered temporary

@@ -33,8 +33,8 @@ StudyStatus drive_single_design(const KindDriverContext& ctx, const std::optiona
     } catch (const Interrupted&) {
       ledger.mark_stopped();  // the study stopped; --resume redoes the Monte Carlo
       status = StudyStatus::kStopped;
-      result.stopped_during = "the reliability analysis of the design (its Monte Carlo samples and fits, redone "
-                              "in full by --resume)";
+      result.stopped_during = "the reliability analysis of the design (its samples so far are no result: "
+                              "--resume runs the analysis again)";
     } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
       status = StudyStatus::kAllFailed;
       result.solver_message = std::string("wear reliability: ") + e.what();
