@@ -246,10 +246,14 @@ TEST(OutputGuarantees, CtrlCDuringALongMonteCarloEndsPromptly) {
   EXPECT_EQ(j["error"], "interrupted");
   EXPECT_NE(j["message"].get<std::string>().find("SIGINT"), std::string::npos) << j;
   EXPECT_FALSE(fs::exists(dir + "/out/wear_profile.csv"));  // nothing half-done published
+}
 
-  // The same inside a reliability study: the analysis (nothing of it is
-  // recorded until it ends) is abandoned at once, everything the store
-  // committed stays, and nothing partial is published.
+// A reliability study's Monte Carlo and distribution fits poll the stop
+// request: the first Ctrl-C ends them promptly, and the study writes its
+// stopped report (what the store committed stays; nothing of the abandoned
+// analysis is published, no temporary file is left).
+TEST(OutputGuarantees, CtrlCDuringTheMonteCarloOfAReliabilityStudyWritesTheStoppedReportPromptly) {
+  const std::string dir = scratch_dir("sigint_reliability");
   const pid_t study = start("run studies/ship_lift_reliability.yaml --set metric_options.reliability_samples=1000000 "
                             "--threads 1 --json --out " + dir + "/study", dir);
   std::this_thread::sleep_for(std::chrono::milliseconds(2500));
@@ -258,9 +262,14 @@ TEST(OutputGuarantees, CtrlCDuringALongMonteCarloEndsPromptly) {
   const CliResult s = finish(study, dir, t1);
   EXPECT_EQ(s.code, 130) << s.err;
   EXPECT_LT(s.seconds, 5.0);
-  const auto js = nlohmann::json::parse(s.out);  // one JSON object: the error
-  EXPECT_EQ(js["error"], "interrupted");
-  EXPECT_FALSE(fs::exists(dir + "/study/summary.json"));
+  const auto js = nlohmann::json::parse(s.out);  // the summary
+  EXPECT_EQ(js["status"], "stopped") << js;
+  EXPECT_NE(js["message"].get<std::string>().find("during the reliability analysis"), std::string::npos) << js;
+  const auto summary = nlohmann::json::parse(read_text(dir + "/study/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  const std::string md = read_text(dir + "/study/report.md");
+  EXPECT_NE(md.find("stopped after"), std::string::npos) << md;
+  EXPECT_NE(md.find("--resume"), std::string::npos) << md;
   EXPECT_TRUE(leftovers(dir + "/study").empty());
 }
 

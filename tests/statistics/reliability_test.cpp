@@ -12,12 +12,14 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
 
 namespace rackopt::statistics {
 namespace {
@@ -140,6 +142,29 @@ TEST(ReliabilitySummary, IdenticalForAnyThreadCount) {
       EXPECT_EQ(a.candidates[c].life_at_reliability[i].lower,
                 b.candidates[c].life_at_reliability[i].lower);
   }
+}
+
+// Ctrl-C during the fits (docs/output.md, "Guarantees"): a stop request that
+// arrives inside a candidate's bootstrap ends the summary with Interrupted
+// before the remaining replicates; one that never comes changes nothing.
+TEST(ReliabilitySummary, AStopDuringTheBootstrapThrowsInterruptedAndNoneChangesNothing) {
+  const auto x = gamma_lives_seconds(400, 32);
+  auto q = wear_paper_request();
+  q.threads = 2;
+  const auto plain = summarize_lives(x, q);
+  std::atomic<int> polls{0};
+  q.stop = [&polls] { return ++polls > 1000000; };  // never within this summary
+  const auto polled = summarize_lives(x, q);
+  ASSERT_EQ(plain.candidates.size(), polled.candidates.size());
+  for (std::size_t c = 0; c < plain.candidates.size(); ++c) {
+    EXPECT_EQ(plain.candidates[c].ks.critical_value, polled.candidates[c].ks.critical_value);
+    EXPECT_EQ(plain.candidates[c].life_at_reliability[0].lower, polled.candidates[c].life_at_reliability[0].lower);
+  }
+  const int polls_of_a_whole_summary = polls.load();
+  polls = 0;
+  q.stop = [&polls] { return ++polls > 5; };  // from the first replicates of the first candidate on
+  EXPECT_THROW(summarize_lives(x, q), rackopt::Interrupted);
+  EXPECT_LT(polls.load(), polls_of_a_whole_summary / 4);  // the other replicates and candidates were skipped
 }
 
 TEST(ReliabilitySummary, BimodalLivesFallBackWithWarning) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <filesystem>
 #include <string>
 
@@ -108,6 +109,33 @@ TEST(FeVerification, AFailedSolveIsReportedAndTheStudyKeepsItsResults) {
   EXPECT_NE(md.find("was not verified by FE: FE solve failed: *ERROR in contact"), std::string::npos) << md;
   EXPECT_NE(rep.summary_json.find("\"ok\":false,\"error\":\"FE solve failed"), std::string::npos);
   EXPECT_TRUE(rep.files.get("fe_csv").empty());
+}
+
+TEST(FeVerification, AStopDuringTheSolvesStopsTheStudyAndTheReportSaysSo) {
+  const StudySpec spec = verified_spec();
+  RunOptions o;
+  o.out_dir = scratch_path("fe_verify_stop");
+  o.threads = 1;
+  std::atomic<bool> stop{false};
+  o.stop = [&stop] { return stop.load(); };
+  o.fe_calls = fake_fe();
+  const auto solve = o.fe_calls.mesh_position;
+  // Ctrl-C while the first FE position solves.
+  o.fe_calls.mesh_position = [&stop, solve](const Drive& d, double x, const fe::FeOptions& f) {
+    stop = true;
+    return solve(d, x, f);
+  };
+  const StudyResult r = run_study(spec, o);
+  ASSERT_TRUE(r.best);
+  EXPECT_EQ(to_string(r.status), "stopped");
+  EXPECT_FALSE(r.fe_verification);
+  EXPECT_NE(r.fe_verification_error.find("stopped"), std::string::npos) << r.fe_verification_error;
+  const study_report::StudyReport rep = study_report::write_study_report(spec, r, o.out_dir);
+  EXPECT_NE(rep.summary_json.find("\"status\":\"stopped\""), std::string::npos) << rep.summary_json;
+  const std::string md = read_text(o.out_dir + "/report.md");
+  EXPECT_NE(md.find("stopped after 1 evaluation, during the FE verification of the best design"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("--resume"), std::string::npos);
 }
 
 TEST(FeVerification, NothingWithoutVerifyAndNoSolveWithoutADesign) {

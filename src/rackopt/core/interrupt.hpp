@@ -4,8 +4,9 @@
 //
 //  * The first SIGINT/SIGTERM sets a process-wide stop request. Long work
 //    polls stop_requested() (a study between evaluations, the Monte Carlo
-//    of a life at R between samples, a plot while gnuplot runs) and ends
-//    cleanly; the command line then exits kInterruptedExit.
+//    of a life at R between samples and through its distribution fits, a
+//    plot while gnuplot runs) and ends cleanly; the command line then exits
+//    kInterruptedExit.
 //  * The handler itself kills the process group of the registered child
 //    (gnuplot), so a hung child cannot keep the program alive.
 //  * A second signal ends the process at once: the registered temporary
@@ -83,9 +84,9 @@ class EmbeddedStopHandlers {
 };
 
 // While one of these lives, the first signal already ends the process at
-// once (as a second one does): for long computations that cannot poll the
-// stop request everywhere (a distribution fit over a million lives) and that
-// have nothing to save when stopped (nothing of theirs is recorded yet).
+// once (as a second one does): for long computations that have nothing to
+// report when stopped (`rackopt wear`'s analysis, which publishes nothing
+// until it ends).
 class ImmediateStopScope {
  public:
   ImmediateStopScope();

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
+#include "rackopt/core/parallel_for.hpp"
 #include "rackopt/statistics/life_fit.hpp"
 #include "rackopt/statistics/sampling.hpp"
 
@@ -93,11 +95,18 @@ std::vector<BootstrapReplicate> parametric_bootstrap(Family family, const Distri
     bad("the bootstrap needs at least " + std::to_string(kMinBootstrapReplicates) + " replicates");
   if (n < 2) bad("the bootstrap needs a sample of at least 2 values");
   std::vector<BootstrapReplicate> out(static_cast<std::size_t>(options.replicates));
+  auto stopped = [&] { return options.stop && options.stop(); };
+  ParallelControl control;
+  control.stop = stopped;
   parallel_for(out.size(), options.threads, [&](std::size_t b) {
+    // A replicate cut short is left empty: the whole bootstrap is abandoned below.
     std::vector<double> x = draw_sample(fitted, n, options.seed, b);
+    if (stopped()) return;
     std::sort(x.begin(), x.end());
+    if (stopped()) return;
     try {
       const LifeFit fit = fit_life_distribution(family, x);
+      if (stopped()) return;
       out[b].refit = fit.distribution;
       out[b].ks_statistic = ks_statistic_sorted(fit.distribution, x);
     } catch (const InputError&) {   // a draw underflowed to 0
@@ -105,7 +114,8 @@ std::vector<BootstrapReplicate> parametric_bootstrap(Family family, const Distri
     } catch (const DesignError&) {  // a degenerate draw (all equal)
       out[b].refit.reset();
     }
-  });
+  }, control);
+  if (stopped()) throw Interrupted("parametric bootstrap: stopped by " + stop_reason());
   return out;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -50,6 +51,12 @@ struct BootstrapOptions {
   int replicates = 200;      // B >= kMinBootstrapReplicates (else InputError)
   std::uint64_t seed = 1;    // replicate b uses stream b of this seed
   unsigned threads = 1;      // the result does not depend on it
+  // Polled (from the worker threads: must be thread-safe) before each
+  // replicate and between its steps (draw, sort, refit, KS), so that a stop
+  // is noticed within one step over N values: once true, the remaining
+  // replicates are skipped and parametric_bootstrap throws
+  // rackopt::Interrupted. Empty = never stops.
+  std::function<bool()> stop;
 };
 
 // One parametric bootstrap replicate: a sample of the original size drawn from

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "rackopt/core/error.hpp"
+#include "rackopt/core/interrupt.hpp"
 
 namespace rackopt::statistics {
 
@@ -151,6 +152,7 @@ ReliabilitySummary summarize_lives(std::span<const double> lives,
   for (std::size_t c = 0; c < request.candidates.size(); ++c) {
     CandidateFit cf;
     cf.family = request.candidates[c];
+    if (request.stop && request.stop()) throw Interrupted("reliability fit: stopped by " + stop_reason());
     try {
       cf.fit = fit_life_distribution(cf.family, positive);
       BootstrapOptions bo;
@@ -158,6 +160,7 @@ ReliabilitySummary summarize_lives(std::span<const double> lives,
       // One independent bootstrap stream per candidate position.
       bo.seed = mix64(request.seed + 0x9E3779B97F4A7C15ULL * (c + 1));
       bo.threads = request.threads;
+      bo.stop = request.stop;
       const auto reps = parametric_bootstrap(cf.family, cf.fit->distribution, positive.size(), bo);
       cf.ks = ks_test_from_bootstrap(cf.fit->distribution, positive, request.ks_level, reps);
       for (double r : request.reliabilities) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -62,6 +63,10 @@ struct ReliabilityRequest {
   int bootstrap_replicates = 200;    // shared by the KS critical value and the fit CIs
   std::uint64_t seed = 1;            // bootstrap seed (results are a function of it)
   unsigned threads = 1;              // results do not depend on it
+  // Polled (thread-safe) before each candidate's fit and through its
+  // bootstrap (BootstrapOptions::stop): once true, summarize_lives throws
+  // rackopt::Interrupted. Empty = never stops.
+  std::function<bool()> stop;
 };
 
 struct CandidateFit {

@@ -35,6 +35,12 @@ void verify_best_design_by_fe(const StudySpec& spec, const RunOptions& options, 
   try {
     result.fe_verification = std::make_shared<const fe::FeComparison>(
         fe::compare_with_fe(*result.best_drive, fe_verification_options(*spec.verify_fe, options)));
+  } catch (const Interrupted& e) {
+    // The stop ends the study, not only its verification: stopped, so that
+    // the report, summary.json and the exit status all say so.
+    result.status = StudyStatus::kStopped;
+    result.stopped_during = "the FE verification of the best design";
+    result.fe_verification_error = std::string("not finished: ") + e.what();
   } catch (const fe::CcxError& e) {
     result.fe_verification_error = std::string("FE solve failed: ") + e.what();
     if (!e.deck().empty() && result.fe_verification_error.find(e.deck()) == std::string::npos) {

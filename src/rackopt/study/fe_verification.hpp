@@ -15,7 +15,9 @@ namespace rackopt::study {
 // what went wrong (no design to verify, ccx missing or failed with its
 // kept deck, an impossible FE body, a stop) goes to
 // result.fe_verification_error, so the study's own results are reported
-// whatever happens to the verification.
+// whatever happens to the verification. A stop during the FE solves also
+// sets result.status to kStopped (and result.stopped_during): the run was
+// interrupted, and --resume verifies again.
 void verify_best_design_by_fe(const StudySpec& spec, const RunOptions& options, StudyResult& result);
 
 // The FeComparisonOptions `verify` asks for.

@@ -21,18 +21,20 @@ StudyStatus drive_single_design(const KindDriverContext& ctx, const std::optiona
     try {
       const Drive design = base.drive_at(start->design.x);
       WearReliabilityOptions wo = study_reliability_options(spec, design, ledger.threads());
-      wo.stop = options.stop;  // thread-safe (polled by the sampling workers)
+      wo.stop = options.stop;  // thread-safe (polled by the sampling workers and the fits)
       // The samples over the executor's workers (the ranks of an MPI job);
       // empty for threads, which the analysis uses itself.
       wo.sample_executor = ledger.executor().reliability_samples(base, start->design.x);
-      // Everything recorded is committed; the analysis itself is not
-      // recorded (--resume redoes it): Ctrl-C may end it at once.
+      // Everything recorded is committed before the long analysis, which is
+      // not recorded: a stop abandons it (its samples so far are no result)
+      // and the study reports "stopped"; --resume redoes it.
       ledger.store().flush();
-      const ImmediateStopScope immediate;
       result.reliability = std::make_shared<const WearReliabilityResult>(run_wear_reliability(design, wo));
     } catch (const Interrupted&) {
-      ledger.stop_requested();  // latch: the study stopped; --resume redoes the Monte Carlo
+      ledger.mark_stopped();  // the study stopped; --resume redoes the Monte Carlo
       status = StudyStatus::kStopped;
+      result.stopped_during = "the reliability analysis of the design (its samples so far are no result: "
+                              "--resume runs the analysis again)";
     } catch (const std::runtime_error& e) {  // DesignError or InputError: the summary is still written
       status = StudyStatus::kAllFailed;
       result.solver_message = std::string("wear reliability: ") + e.what();

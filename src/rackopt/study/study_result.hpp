@@ -67,6 +67,10 @@ struct StudyResult {
   std::size_t unchecked_records = 0;           // recorded rows from before checksums, reused unchecked
   std::size_t failed_evaluations = 0;
   std::string solver_message;
+  // With status kStopped: what the stop interrupted when it was not the
+  // evaluations themselves ("the reliability analysis of the design", "the
+  // FE verification of the best design"), for the report; else empty.
+  std::string stopped_during;
   std::vector<std::string> warnings;           // model warnings, listed once, in the order the designs
                                                // were first used (the same after --resume)
   std::vector<WarningGroup> warning_groups;    // every design's model warnings by kind, first-use order

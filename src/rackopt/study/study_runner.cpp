@@ -137,6 +137,7 @@ StudyResult run_study(const StudySpec& spec, const RunOptions& options) {
   // After the record is complete: the curve is for the report only.
   attach_best_design_curve(spec, result);
   verify_best_design_by_fe(spec, options, result);
+  if (result.status == StudyStatus::kStopped) store.set_meta("status", "stopped");  // stopped during the FE
   result.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return result;
 }

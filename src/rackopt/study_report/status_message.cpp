@@ -13,7 +13,9 @@ using namespace rackopt::study;
 std::string status_message(const StudySpec& spec, const StudyResult& r) {
   const std::string n = std::to_string(r.evaluations) + " evaluation" + (r.evaluations == 1 ? "" : "s");
   if (r.status == StudyStatus::kStopped) {
-    return "stopped after " + n + "; the results so far are written. Continue with --resume (same --out).";
+    const std::string during = r.stopped_during.empty() ? "" : ", during " + r.stopped_during;
+    return "stopped after " + n + during +
+           "; the results so far are written. Continue with --resume (same --out).";
   }
   if (r.status == StudyStatus::kNoFeasiblePoint) {
     std::string s = "no feasible design in " + n + ".";

@@ -466,6 +466,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   req.bootstrap_replicates = opt.bootstrap_replicates;
   req.seed = seed;
   req.threads = threads;
+  req.stop = opt.stop;  // the fits over up to a million lives poll it too
   const std::size_t evaluated = static_cast<std::size_t>(
       std::count_if(out.lives.begin(), out.lives.end(), [](const statistics::SampleResult& s) { return s.ok(); }));
   if (evaluated > 0) {
@@ -480,6 +481,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
   // Exact results for one monotone input: the life at R is the life at that
   // input's quantile (docs/models/reliability.md).
   const auto t_exact = std::chrono::steady_clock::now();
+  if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped before the exact quantiles");
   if (dim == 1) {
     const statistics::Distribution& d0 = dist[0];
     auto life_at_q = [&](double q) { return life_of(d0.quantile(q)).life_years; };
@@ -580,6 +582,7 @@ WearReliabilityResult run_wear_reliability(const Drive& drive, const WearReliabi
       } else {
         // Bisection on the probability, one model life per step.
         for (std::size_t k = 0; k < spec.times.size(); ++k) {
+          if (opt.stop && opt.stop()) throw Interrupted("wear life at R: stopped during the exact R(t)");
           const double t_years = spec.times[k] / kSecondsPerYear;
           double a = qa + 1e-12, b = qb - 1e-12;
           for (int it = 0; it < 60; ++it) {
