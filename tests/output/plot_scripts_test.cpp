@@ -40,34 +40,92 @@ TEST(PlotScripts, TitlesWithAnApostropheStayOneString) {
   }
 }
 
-// The load-share panel reads each pair slot's in_mesh and load_share
-// columns of the CSV written beside it: the script's column numbers must be
-// those of the CSV's header, for every slot.
-TEST(PlotScripts, StiffnessPlotReadsEachSlotsOwnColumns) {
-  StiffnessCurve c;
-  c.max_pairs = 3;
-  const std::string csv = stiffness_csv(c);
-  std::vector<std::string> header;
-  std::string cell;
-  for (char ch : csv.substr(0, csv.find('\n'))) {
-    if (ch == ',') {
-      header.push_back(cell);
-      cell.clear();
+// Splits `line` at `separator`, keeping empty cells.
+std::vector<std::string> cells_of(const std::string& line, char separator) {
+  std::vector<std::string> cells(1);
+  for (char ch : line) {
+    if (ch == separator) {
+      cells.emplace_back();
     } else {
-      cell += ch;
+      cells.back() += ch;
     }
   }
-  header.push_back(cell);
-  auto column = [&](const std::string& name) {  // 1-based, as gnuplot counts
-    return static_cast<int>(std::find(header.begin(), header.end(), name) - header.begin()) + 1;
+  return cells;
+}
+
+// The stiffness plot draws from the columns it needs, inline in its script:
+// every sample of the CSV is there (none dropped), with the CSV's values,
+// and the load-share panel reads each pair slot's own in_mesh and
+// load_share columns.
+TEST(PlotScripts, StiffnessPlotDataHoldsEveryPlottedCsvValue) {
+  StiffnessCurve c;
+  c.max_pairs = 3;
+  for (int i = 0; i < 7; ++i) {
+    MeshState s;
+    s.travel = 0.001 * i + 1e-7;
+    s.stiffness = 2.5e8 + 1.234567e6 * i;
+    s.local_stiffness = 1.5e9 - 3.3e5 * i;
+    s.approach = 1.7e-5 + 1e-8 * i;
+    for (int q = 0; q < 3; ++q) {
+      if ((i + q) % 3 == 0) continue;  // each slot leaves the mesh somewhere
+      PairState p;
+      p.slot = q;
+      p.load_share = 0.1 * q + 0.01 * i + 0.123456789;
+      s.pairs.push_back(p);
+    }
+    c.samples.push_back(s);
+  }
+  std::vector<std::vector<std::string>> csv;
+  for (const std::string& line : cells_of(stiffness_csv(c), '\n')) {
+    if (!line.empty()) csv.push_back(cells_of(line, ','));
+  }
+  const std::vector<std::string>& header = csv.front();
+  auto csv_column = [&](const std::string& name) {  // 0-based
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
   };
   const std::string gp = stiffness_gnuplot(c, "t", "s.csv", "s.png");
+  const std::string begin = "$rackopt_stiffness << EOD\n";
+  const std::size_t data_at = gp.find(begin);
+  ASSERT_NE(data_at, std::string::npos) << gp;
+  const std::size_t data_end = gp.find("\nEOD\n", data_at);
+  ASSERT_NE(data_end, std::string::npos) << gp;
+  std::vector<std::vector<std::string>> block;
+  for (const std::string& line : cells_of(gp.substr(data_at + begin.size(), data_end - data_at - begin.size()), '\n')) {
+    std::vector<std::string> row;
+    for (const std::string& cell : cells_of(line, ' ')) {
+      if (!cell.empty()) row.push_back(cell);
+    }
+    block.push_back(row);
+  }
+  ASSERT_EQ(block.size() + 1, csv.size());  // every sample, the header aside
+  // Datablock column (1-based, as the script's `using` counts) -> CSV column name.
+  std::vector<std::pair<int, std::string>> plotted = {{1, "travel_m"},
+                                                      {2, "stiffness_N_per_m"},
+                                                      {3, "rigid_body_stiffness_N_per_m"},
+                                                      {4, "transmission_error_m"}};
   for (int q = 0; q < 3; ++q) {
     const std::string slot = "pair" + std::to_string(q);
-    const std::string expected = "using 1:($" + std::to_string(column(slot + "_in_mesh")) + ">0 ? $" +
-                                 std::to_string(column(slot + "_load_share")) + " : 1/0) with lines title 'pair slot " +
-                                 std::to_string(q) + "'";
+    const int in_mesh = 5 + 2 * q, share = 6 + 2 * q;
+    plotted.emplace_back(in_mesh, slot + "_in_mesh");
+    plotted.emplace_back(share, slot + "_load_share");
+    const std::string expected = "using 1:($" + std::to_string(in_mesh) + ">0 ? $" + std::to_string(share) +
+                                 " : 1/0) with lines title 'pair slot " + std::to_string(q) + "'";
     EXPECT_NE(gp.find(expected), std::string::npos) << expected << "\n" << gp;
+  }
+  EXPECT_NE(gp.find("using 1:($2/1e6) with lines lw 2 title 'coupled mesh'"), std::string::npos);
+  EXPECT_NE(gp.find("using 1:($3/1e6) with lines dt 2 title 'rigid rack body'"), std::string::npos);
+  EXPECT_NE(gp.find("using 1:($4*1e6) with lines lw 2 title 'mesh deflection under load'"), std::string::npos);
+  for (std::size_t r = 0; r < block.size(); ++r) {
+    ASSERT_EQ(block[r].size(), 10u) << "row " << r;
+    for (const auto& [column, name] : plotted) {
+      const std::string& in_csv = csv[r + 1][csv_column(name)];
+      const std::string& in_block = block[r][static_cast<std::size_t>(column - 1)];
+      if (name.find("_load_share") != std::string::npos && in_csv.empty()) {
+        EXPECT_EQ(in_block, "0") << "row " << r << " " << name;  // not in mesh: the panel hides it
+      } else {
+        EXPECT_EQ(in_block, in_csv) << "row " << r << " " << name;
+      }
+    }
   }
 }
 
