@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "rackopt/core/fnv1a.hpp"
+#include "rackopt/record/record_checksum.hpp"
 
 namespace rackopt::record {
 namespace {
@@ -132,42 +133,6 @@ std::string encode_doubles(std::span<const double> v) {
 std::int64_t hash_bytes(const std::string& bytes) { return std::bit_cast<std::int64_t>(fnv1a64(bytes)); }
 
 // The bytes of one row that resume reads, exactly as they are stored.
-struct RowBytes {
-  std::int64_t x_hash = 0;
-  std::string_view phase, x, objectives, inequality, equality, metric_ids, metric_values;
-  std::int64_t ok = 0;
-  std::string_view message;
-  std::int64_t gradient_probe = 0;
-  double seconds = 0;
-  std::string_view warnings, models;
-};
-
-// FNV-1a over every field of the row, each preceded by its length, so that a
-// flipped bit anywhere (or bytes moved from one field to the next) changes
-// it. Stored with the row; a row whose bytes no longer give it is damaged.
-std::int64_t row_checksum(const RowBytes& r) {
-  std::uint64_t h = kFnv1aOffsetBasis;
-  auto number = [&h](std::uint64_t v) {
-    std::string bytes;
-    put_le(bytes, v);
-    h = fnv1a64(bytes, h);
-  };
-  auto field = [&](std::string_view bytes) {
-    number(bytes.size());
-    h = fnv1a64(bytes, h);
-  };
-  number(static_cast<std::uint64_t>(r.x_hash));
-  for (std::string_view f : {r.phase, r.x, r.objectives, r.inequality, r.equality, r.metric_ids, r.metric_values})
-    field(f);
-  number(static_cast<std::uint64_t>(r.ok));
-  field(r.message);
-  number(static_cast<std::uint64_t>(r.gradient_probe));
-  number(std::bit_cast<std::uint64_t>(r.seconds));
-  field(r.warnings);
-  field(r.models);
-  return std::bit_cast<std::int64_t>(h);
-}
-
 // Warnings as one TEXT cell: each warning followed by a line break; inside a
 // warning a backslash is written as two backslashes and a line break as
 // backslash-n. So any list (empty strings and line breaks included) reads
