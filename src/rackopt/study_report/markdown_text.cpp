@@ -1,6 +1,5 @@
 #include "rackopt/study_report/markdown_text.hpp"
 
-#include <cmark-gfm-core-extensions.h>
 #include <cmark-gfm.h>
 
 #include <algorithm>
@@ -12,83 +11,18 @@
 #include <vector>
 
 #include "rackopt/core/text.hpp"
+#include "rackopt/study_report/cmark_tree.hpp"
 
 namespace rackopt::study_report {
 namespace {
+
+using namespace cmark_tree;
 
 bool is_control(char c) {
   const auto byte = static_cast<unsigned char>(c);
   return byte < 0x20 || byte == 0x7f;
 }
 
-struct NodeFree {
-  void operator()(cmark_node* n) const { cmark_node_free(n); }
-};
-struct ParserFree {
-  void operator()(cmark_parser* p) const { cmark_parser_free(p); }
-};
-
-std::string literal_of(cmark_node* n) {
-  const char* s = cmark_node_get_literal(n);
-  return s != nullptr ? s : "";
-}
-
-// What a reader sees of `n`'s content: its text, code and line breaks.
-std::string plain_text(cmark_node* n) {
-  std::string out;
-  for (cmark_node* c = cmark_node_first_child(n); c != nullptr; c = cmark_node_next(c)) {
-    const cmark_node_type t = cmark_node_get_type(c);
-    if (t == CMARK_NODE_TEXT || t == CMARK_NODE_CODE || t == CMARK_NODE_HTML_INLINE) {
-      out += literal_of(c);
-    } else if (t == CMARK_NODE_SOFTBREAK || t == CMARK_NODE_LINEBREAK) {
-      out += ' ';
-    } else {
-      out += plain_text(c);
-    }
-  }
-  return out;
-}
-
-cmark_node* literal_node(cmark_node_type type, const std::string& text) {
-  cmark_node* n = cmark_node_new(type);
-  cmark_node_set_literal(n, text.c_str());
-  return n;
-}
-
-// Replaces `old_node` with `new_node` in the tree and frees `old_node`.
-void replace(cmark_node* old_node, cmark_node* new_node) {
-  cmark_node_replace(old_node, new_node);
-  cmark_node_free(old_node);
-}
-
-// The nodes of the tree under `root` whose type satisfies `wanted`, collected
-// first: the tree must not change under the iterator.
-template <class Wanted>
-std::vector<cmark_node*> nodes_where(cmark_node* root, Wanted wanted) {
-  std::vector<cmark_node*> found;
-  cmark_iter* it = cmark_iter_new(root);
-  for (cmark_event_type ev = cmark_iter_next(it); ev != CMARK_EVENT_DONE; ev = cmark_iter_next(it)) {
-    if (ev == CMARK_EVENT_ENTER && wanted(cmark_node_get_type(cmark_iter_get_node(it)))) {
-      found.push_back(cmark_iter_get_node(it));
-    }
-  }
-  cmark_iter_free(it);
-  return found;
-}
-
-// A parser with the extensions GitHub and report.html read report.md with.
-std::unique_ptr<cmark_parser, ParserFree> gfm_parser() {
-  static std::once_flag registered;
-  std::call_once(registered, [] { cmark_gfm_core_extensions_ensure_registered(); });
-  std::unique_ptr<cmark_parser, ParserFree> parser(cmark_parser_new(CMARK_OPT_DEFAULT));
-  if (!parser) throw std::runtime_error("report.md: cmark-gfm could not make a parser");
-  for (const char* name : {"table", "strikethrough", "autolink"}) {
-    cmark_syntax_extension* ext = cmark_find_syntax_extension(name);
-    if (ext == nullptr) throw std::runtime_error(std::string("report.md: cmark-gfm has no '") + name + "' extension");
-    cmark_parser_attach_syntax_extension(parser.get(), ext);
-  }
-  return parser;
-}
 
 // The CommonMark renderer ends a list that a list or a code block follows
 // with the line "<!-- end list -->", raw HTML of its own. Each such line (as
@@ -97,9 +31,9 @@ std::unique_ptr<cmark_parser, ParserFree> gfm_parser() {
 // and renders as nothing.
 std::string without_list_end_comments(const std::string& markdown) {
   static constexpr std::string_view kComment = "<!-- end list -->";
-  const auto parser = gfm_parser();
+  const auto parser = gfm_parser("report.md");
   cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
-  const std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
+  const cmark_tree::Document doc(cmark_parser_finish(parser.get()));
   std::set<int> lines;
   for (cmark_node* n : nodes_where(doc.get(), [](cmark_node_type t) { return t == CMARK_NODE_HTML_BLOCK; })) {
     if (literal_of(n).find(kComment) != std::string::npos) lines.insert(cmark_node_get_start_line(n));
@@ -239,16 +173,11 @@ int unlink_forbidden_destinations(cmark_node* root) {
 }
 
 std::string markdown_description(std::string_view markdown) {
-  const auto parser = gfm_parser();
+  const auto parser = gfm_parser("report.md");
   cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
-  const std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
+  const cmark_tree::Document doc(cmark_parser_finish(parser.get()));
   if (!doc) throw std::runtime_error("report.md: cmark-gfm could not parse the study's description");
-  const std::vector<cmark_node*> raw_html = nodes_where(
-      doc.get(), [](cmark_node_type t) { return t == CMARK_NODE_HTML_INLINE || t == CMARK_NODE_HTML_BLOCK; });
-  for (cmark_node* n : raw_html) {
-    const bool block = cmark_node_get_type(n) == CMARK_NODE_HTML_BLOCK;
-    replace(n, literal_node(block ? CMARK_NODE_CODE_BLOCK : CMARK_NODE_TEXT, literal_of(n)));
-  }
+  raw_html_as_text(doc.get());
   unlink_forbidden_destinations(doc.get());
   char* rendered = cmark_render_commonmark(doc.get(), CMARK_OPT_DEFAULT, 0);
   if (rendered == nullptr) throw std::runtime_error("report.md: cmark-gfm could not render the study's description");

@@ -11,10 +11,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "rackopt/study_report/cmark_tree.hpp"
 #include "rackopt/study_report/markdown_text.hpp"
 
 namespace rackopt::study_report {
 namespace {
+
+using namespace cmark_tree;
 
 // Small enough to read in the source, enough for tables that line up, plots
 // that scale with the window and a page that prints. A table whose header
@@ -44,46 +47,6 @@ figure.plot + p { margin-top: .2em; color: #444; }
 @media print { main { max-width: none; }
                figure.plot { width: 100%; left: 0; transform: none; break-inside: avoid; } }
 )";
-
-struct NodeFree {
-  void operator()(cmark_node* n) const { cmark_node_free(n); }
-};
-struct ParserFree {
-  void operator()(cmark_parser* p) const { cmark_parser_free(p); }
-};
-
-std::string literal_of(cmark_node* n) {
-  const char* s = cmark_node_get_literal(n);
-  return s != nullptr ? s : "";
-}
-
-// The alt text of an image: its children's text, as a reader sees it.
-std::string plain_text(cmark_node* n) {
-  std::string out;
-  for (cmark_node* c = cmark_node_first_child(n); c != nullptr; c = cmark_node_next(c)) {
-    const cmark_node_type t = cmark_node_get_type(c);
-    if (t == CMARK_NODE_TEXT || t == CMARK_NODE_CODE) {
-      out += literal_of(c);
-    } else if (t == CMARK_NODE_SOFTBREAK || t == CMARK_NODE_LINEBREAK) {
-      out += ' ';
-    } else {
-      out += plain_text(c);
-    }
-  }
-  return out;
-}
-
-// Replaces `old_node` with `new_node` in the tree and frees `old_node`.
-void replace(cmark_node* old_node, cmark_node* new_node) {
-  cmark_node_replace(old_node, new_node);
-  cmark_node_free(old_node);
-}
-
-cmark_node* literal_node(cmark_node_type type, const std::string& text) {
-  cmark_node* n = cmark_node_new(type);
-  cmark_node_set_literal(n, text.c_str());
-  return n;
-}
 
 bool starts_with(const std::string& s, std::size_t at, const char* prefix) {
   return s.compare(at, std::char_traits<char>::length(prefix), prefix) == 0;
@@ -209,19 +172,9 @@ std::string inline_svg(const std::string& svg_text, const std::string& id_prefix
 
 std::string report_html(const std::string& markdown, const std::string& title,
                         const std::map<std::string, std::string>& svg_by_target) {
-  static std::once_flag registered;
-  std::call_once(registered, [] { cmark_gfm_core_extensions_ensure_registered(); });
-
-  const std::unique_ptr<cmark_parser, ParserFree> parser(cmark_parser_new(CMARK_OPT_DEFAULT));
-  if (!parser) throw std::runtime_error("report.html: cmark-gfm could not make a parser");
-  // The extensions GitHub renders report.md with.
-  for (const char* name : {"table", "strikethrough", "autolink"}) {
-    cmark_syntax_extension* ext = cmark_find_syntax_extension(name);
-    if (ext == nullptr) throw std::runtime_error(std::string("report.html: cmark-gfm has no '") + name + "' extension");
-    cmark_parser_attach_syntax_extension(parser.get(), ext);
-  }
+  const auto parser = gfm_parser("report.html");
   cmark_parser_feed(parser.get(), markdown.data(), markdown.size());
-  const std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
+  const Document doc(cmark_parser_finish(parser.get()));
   if (!doc) throw std::runtime_error("report.html: cmark-gfm could not parse report.md");
 
   // report.md writes user text escaped and a description filtered
@@ -230,26 +183,10 @@ std::string report_html(const std::string& markdown, const std::string& title,
   // link that is not relative, http(s) or mailto.
   unlink_forbidden_destinations(doc.get());
 
-  // Nodes to change, collected first: the tree must not change under the iterator.
-  std::vector<cmark_node*> raw_html, images;
-  {
-    cmark_iter* it = cmark_iter_new(doc.get());
-    for (cmark_event_type ev = cmark_iter_next(it); ev != CMARK_EVENT_DONE; ev = cmark_iter_next(it)) {
-      if (ev != CMARK_EVENT_ENTER) continue;
-      cmark_node* n = cmark_iter_get_node(it);
-      const cmark_node_type t = cmark_node_get_type(n);
-      if (t == CMARK_NODE_HTML_INLINE || t == CMARK_NODE_HTML_BLOCK) raw_html.push_back(n);
-      if (t == CMARK_NODE_IMAGE) images.push_back(n);
-    }
-    cmark_iter_free(it);
-  }
   // The page is rendered with raw HTML allowed (the figures are raw HTML), so
   // the markdown's own raw HTML becomes text first: shown, never interpreted.
-  for (cmark_node* n : raw_html) {
-    const bool block = cmark_node_get_type(n) == CMARK_NODE_HTML_BLOCK;
-    replace(n, literal_node(block ? CMARK_NODE_CODE_BLOCK : CMARK_NODE_TEXT, literal_of(n)));
-  }
-  for (cmark_node* image : images) {
+  raw_html_as_text(doc.get());
+  for (cmark_node* image : nodes_where(doc.get(), [](cmark_node_type t) { return t == CMARK_NODE_IMAGE; })) {
     const char* url_text = cmark_node_get_url(image);
     const std::string url = url_text != nullptr ? url_text : "";
     const std::string alt = plain_text(image);
