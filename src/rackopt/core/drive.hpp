@@ -163,6 +163,9 @@ struct Effects {
   bool body_shear = true;          // Timoshenko shear of the rack body
   bool interference_limit = true;  // false: ignore undercut/interference as the rack railway paper did
   bool spalling = true;            // apply the spalls listed in faults
+  // The stress metrics use the dynamic factor K_V the dynamic model computes
+  // (docs/models/dynamics.md) instead of load.dynamic_factor. Off costs nothing.
+  bool dynamics = false;
 
   // At least one compliance is modelled. With none the mesh is rigid: its
   // stiffness is infinite and the load sharing undefined, so a problem that
@@ -297,6 +300,20 @@ struct ReliabilitySpec {
   double life_table_tolerance = 5e-4;     // relative midpoint check of every table interval
 };
 
+// The drive as a vibrating system (problem section `dynamics:`,
+// docs/models/dynamics.md). Only the dynamic model and its metrics read it.
+struct DynamicsSpec {
+  double moving_mass = 0;      // M: carriage, vehicle or chamber share this pinion drives [kg]; 0 = not given
+  double drive_inertia = 0;    // J_m: motor + gearbox reduced to the pinion shaft [kg m^2]
+  double drive_stiffness = 0;  // k_d torsional, drive to pinion [N m/rad]; 0 = rigid drive train
+  double damping_ratio = 0.05; // mesh damping, of critical at the mean stiffness [-]
+  // Pinion pitch-line speeds to sweep [m/s]; speed_points = 0: not given
+  // (the dynamic model's default range around load.speed, docs/yaml.md).
+  double speed_from = 0, speed_to = 0;
+  int speed_points = 0;
+  bool given() const { return moving_mass > 0; }
+};
+
 struct Drive {
   std::string name;
   std::string source_file;  // problem file it was loaded from (for messages)
@@ -310,6 +327,7 @@ struct Drive {
   WearSpec wear;
   Duty duty;
   ReliabilitySpec reliability;
+  DynamicsSpec dynamics;
 };
 
 // Seconds per year used for every life in years (Julian year, 365.25 d).
