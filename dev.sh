@@ -17,7 +17,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 PACKAGES=(build-essential cmake pkg-config libnlopt-cxx-dev coinor-libipopt-dev libeigen3-dev
           libgsl-dev libyaml-cpp-dev libsqlite3-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
           libgmsh-dev gmsh calculix-ccx libpagmo-dev openmpi-bin libopenmpi-dev libcli11-dev
-          libcmark-gfm-dev libcmark-gfm-extensions-dev
+          libcmark-gfm-dev libcmark-gfm-extensions-dev libfftw3-dev
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
           chromium)
 # chromium: only for the test that opens a study's report.html in a browser

@@ -33,6 +33,9 @@ struct Args {
   bool extended_contact = false;  // --extended-contact (fe)
   bool pictures = false;          // --pictures (fe): mesh and deformed shape of the first position
   bool rack_supports = false;     // --rack-supports (fe)
+  std::optional<double> speed;    // --speed V (dynamics): the operating speed [m/s]; absent = load.speed
+  bool sweep = false;             // --sweep (dynamics): K_V over the speed range
+  bool stability = false;         // --stability (dynamics): Floquet over the speed range
 };
 
 struct UsageError : std::runtime_error {
@@ -78,6 +81,7 @@ void report_stale_temporaries(const rackopt::FolderLock& lock);
 int cmd_check(const Args& a);
 int cmd_stiffness(const Args& a);
 int cmd_wear(const Args& a);
+int cmd_dynamics(const Args& a);
 int cmd_run(const Args& a);
 int cmd_fe(const Args& a);
 

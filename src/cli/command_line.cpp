@@ -17,6 +17,7 @@
 #include "rackopt/core/run_limits.hpp"
 #include "rackopt/fe/fe_comparison.hpp"
 #include "rackopt/output/json_writer.hpp"
+#include "rackopt/units/units.hpp"
 #include "rackopt/version.hpp"
 
 namespace rackopt::cli {
@@ -121,6 +122,40 @@ void add_stiffness(CLI::App& app, Args& a) {
       "  rackopt stiffness problems/ship_lift.yaml -o out/ship_lift --json");
 }
 
+void add_dynamics(CLI::App& app, Args& a) {
+  CLI::App& c = *app.add_subcommand(
+      "dynamics", "natural frequencies, steady dynamic response, dynamic factor K_V\nover speed, Campbell diagram");
+  add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md;\nsection dynamics)");
+  add_set(c, a, kProblemSet);
+  add_out(c, a, "out/<problem file name>_dynamics");
+  add_json(c, a,
+           "natural_frequencies_hz, kv_curve [{speed_m_per_s, kv}],\nkv_max, static_mesh_force_N, the whole "
+           "analysis\nunder dynamics, files (docs/output.md)");
+  // A speed with its unit ("0.5 m/s", "30 m/min"); a bare number is m/s.
+  c.add_option_function<std::string>(
+       "--speed",
+       [&a](const std::string& text) {
+         double v = 0;
+         try {
+           v = rackopt::parse_quantity(text, rackopt::QuantityKind::kSpeed);
+         } catch (const std::exception& e) {
+           throw UsageError(std::string("--speed: ") + e.what(), "dynamics");
+         }
+         if (!(v > 0)) throw UsageError("--speed needs a speed > 0, got '" + text + "'", "dynamics");
+         a.speed = v;
+       },
+       "operating speed for the steady response, e.g. \"0.5 m/s\"\n(default load.speed)")
+      ->type_name("V");
+  c.add_flag("--sweep", a.sweep,
+             "K_V over the speed range (dynamics.speed_range, default\nload.speed/20 .. 1.25 load.speed), up and down");
+  c.add_flag("--stability", a.stability, "Floquet multipliers over the speed range");
+  c.footer(
+      "Writes DIR/dynamics.json, the CSV tables and DIR/dynamics.png\n(docs/output.md, docs/models/dynamics.md).\n"
+      "Examples:\n"
+      "  rackopt dynamics problems/gantry_axis.yaml --sweep\n"
+      "  rackopt dynamics problems/rack_railway.yaml --speed \"3 m/s\" --json");
+}
+
 void add_wear(CLI::App& app, Args& a) {
   CLI::App& c = *app.add_subcommand("wear", "Archard wear of both flanks, wear life and life at reliability R");
   add_file(c, a, "FILE", "the problem file (YAML, docs/yaml.md;\nkeys wear, duty, reliability)");
@@ -212,6 +247,7 @@ std::unique_ptr<CLI::App> make_app(Args& a) {
   add_check(*app, a);
   add_stiffness(*app, a);
   add_wear(*app, a);
+  add_dynamics(*app, a);
   add_fe(*app, a);
   add_run(*app, a);
   add_json(*app->add_subcommand("version", "print the version, as --version does"), a, "{\"ok\": true, \"version\": text}");

@@ -136,6 +136,8 @@ int main(int argc, char** argv) {
       code = cmd_check(args);
     } else if (args.command == "stiffness") {
       code = cmd_stiffness(args);
+    } else if (args.command == "dynamics") {
+      code = cmd_dynamics(args);
     } else if (args.command == "run") {
       code = cmd_run(args);
     } else if (args.command == "fe") {

@@ -45,6 +45,34 @@ void add_warning(MetricValues& out, const std::string& w) {
   if (std::find(out.warnings.begin(), out.warnings.end(), w) == out.warnings.end()) out.warnings.push_back(w);
 }
 
+bool requested(std::span<const MetricRequest> requests, std::string_view name) {
+  for (const MetricRequest& r : requests) {
+    if (r.name == name) return true;
+  }
+  return false;
+}
+
+// The stresses read the computed K_V when effects.dynamics is on.
+bool stress_uses_dynamics(const Drive& drive, std::span<const MetricRequest> requests) {
+  if (!drive.effects.dynamics) return false;
+  for (const MetricRequest& r : requests) {
+    if (find_metric(r.name).models.contains(Model::kStress)) return true;
+  }
+  return false;
+}
+
+// What of the dynamic analysis the requests read (the natural frequencies
+// and the resonance margin come with any).
+DynamicsRequest dynamics_request(const Drive& drive, std::span<const MetricRequest> requests) {
+  DynamicsRequest d;
+  d.sweep = requested(requests, "dynamic_factor") || stress_uses_dynamics(drive, requests);
+  d.stability = requested(requests, "parametric_stability_margin");
+  d.response_at_speed = requested(requests, "dynamic_mesh_force_max") ||
+                        requested(requests, "dynamic_transmission_error_pp") ||
+                        requested(requests, "contact_loss_fraction");
+  return d;
+}
+
 }  // namespace
 
 StressInputs resolve_stress_inputs(const Drive& drive, const MetricOptions& o) {
@@ -113,6 +141,18 @@ void check_metric_requests(const Drive& drive, std::span<const MetricRequest> re
   }
   if (has(req, Requirement::kSpeed) && !(drive.load.speed > 0)) {
     missing_in_problem(drive, "load.speed", "drive_power and pinion_speed need the rack speed load.speed (e.g. 0.5 m/s)");
+  }
+  if (stress_uses_dynamics(drive, requests)) req |= static_cast<std::uint8_t>(Requirement::kMovingMass);
+  if (has(req, Requirement::kMovingMass) && !drive.dynamics.given()) {
+    missing_in_problem(drive, "dynamics.moving_mass",
+                       "the dynamics metrics need the problem's `dynamics` section: at least dynamics.moving_mass, the "
+                       "mass this pinion drives along the rack (docs/yaml.md)");
+  }
+  const DynamicsRequest dyn = dynamics_request(drive, requests);
+  if ((dyn.sweep || dyn.stability) && drive.dynamics.speed_points <= 0 && !(drive.load.speed > 0)) {
+    missing_in_problem(drive, "dynamics.speed_range",
+                       "dynamic_factor (and the stresses with effects.dynamics) sweep a speed range: give "
+                       "dynamics.speed_range {from, to, points} or load.speed");
   }
   if (has(req, Requirement::kBodyHeight) && !(drive.rack.body_height > 0)) {
     missing_in_problem(drive, "rack.body_height",
@@ -203,6 +243,9 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     defs.push_back(&find_metric(r.name));
     needed.insert(defs.back()->models);
   }
+  // The stresses with effects.dynamics read the computed K_V.
+  const bool dynamic_stress = stress_uses_dynamics(drive, requests);
+  if (dynamic_stress) needed.insert(Model::kDynamics);
   MetricValues out;
   ModelResults m;
   m.drive = &drive;
@@ -349,12 +392,40 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     for (const std::string& w : m.wear_slot.value->warnings) add_warning(out, w);
   }
 
+  // --- dynamics ------------------------------------------------------------
+  if (needed.contains(Model::kDynamics)) {
+    out.models_run.insert(Model::kDynamics);
+    ++out.model_runs;
+    if (m.geometry_slot.failure) {
+      m.dynamics_slot.failure = m.geometry_slot.failure;
+    } else {
+      try {
+        const MeshStiffnessModel model(drive, *m.geometry_slot.value);
+        DynamicsRequest dr = dynamics_request(drive, requests);
+        dr.positions_per_period = o.positions_per_period.value_or(0);
+        m.dynamics_slot.value = analyse_drive_dynamics(drive, model, dr);
+        for (const std::string& w : m.dynamics_slot.value->warnings) add_warning(out, w);
+        // An explicit metric option K_V still wins: it is the caller's own number.
+        // ISO 6336-1 never lets K_V below 1.
+        if (dynamic_stress && !(o.load_factors.dynamic > 0))
+          m.stress_inputs.factors.dynamic = std::max(1.0, m.dynamics_slot.value->kv_max);
+      } catch (const DesignError& e) {
+        m.dynamics_slot.failure = failure_of(e, Model::kDynamics);
+      } catch (const std::invalid_argument& e) {
+        // The drive train or the law cannot be integrated (a message naming the quantity).
+        m.dynamics_slot.failure = ModelFailure{"dynamics_input", e.what(), std::string(model_name(Model::kDynamics))};
+      }
+    }
+  }
+
   // --- stresses ------------------------------------------------------------
   if (needed.contains(Model::kStress)) {
     out.models_run.insert(Model::kStress);
     ++out.model_runs;
     if (m.geometry_slot.failure) {
       m.stress_slot.failure = m.geometry_slot.failure;
+    } else if (dynamic_stress && m.dynamics_slot.failure) {
+      m.stress_slot.failure = m.dynamics_slot.failure;
     } else {
       try {
         m.stress_slot.value = tooth_stress(drive, *m.geometry_slot.value, m.stress_inputs.factors,
@@ -393,6 +464,7 @@ MetricValues evaluate_metrics(const Drive& drive, std::span<const MetricRequest>
     attribute(m.wear_slot);
     attribute(m.life_at_R_slot);
     attribute(m.stress_slot);
+    attribute(m.dynamics_slot);
   }
 
   // --- values --------------------------------------------------------------

@@ -12,6 +12,7 @@ namespace rackopt::metrics {
 
 void append_stiffness_metrics(std::vector<MetricDefinition>& registry);  // stiffness_metrics.cpp
 void append_mesh_dynamics_metrics(std::vector<MetricDefinition>& registry);  // mesh_dynamics_metrics.cpp
+void append_drive_dynamics_metrics(std::vector<MetricDefinition>& registry);  // drive_dynamics_metrics.cpp
 void append_geometry_metrics(std::vector<MetricDefinition>& registry);   // geometry_metrics.cpp
 void append_wear_metrics(std::vector<MetricDefinition>& registry);       // wear_metrics.cpp
 void append_stress_metrics(std::vector<MetricDefinition>& registry);     // stress_metrics.cpp

@@ -19,6 +19,7 @@ std::vector<MetricDefinition> build_registry() {
   std::vector<MetricDefinition> r;
   append_stiffness_metrics(r);
   append_mesh_dynamics_metrics(r);
+  append_drive_dynamics_metrics(r);
   append_geometry_metrics(r);
   append_wear_metrics(r);
   append_stress_metrics(r);
@@ -54,6 +55,7 @@ std::string_view model_name(Model m) {
     case Model::kStress: return "stress";
     case Model::kMeshRipple: return "mesh_ripple";
     case Model::kTransmissionError: return "transmission_error";
+    case Model::kDynamics: return "dynamics";
   }
   return "?";
 }
@@ -61,7 +63,7 @@ std::string_view model_name(Model m) {
 std::vector<std::string> ModelSet::names() const {
   std::vector<std::string> out;
   for (Model m : {Model::kGeometry, Model::kStiffnessCurve, Model::kWearLife, Model::kWearReliability,
-                  Model::kStress, Model::kMeshRipple, Model::kTransmissionError}) {
+                  Model::kStress, Model::kMeshRipple, Model::kTransmissionError, Model::kDynamics}) {
     if (contains(m)) out.emplace_back(model_name(m));
   }
   return out;

@@ -31,6 +31,10 @@ enum class Model : std::uint8_t {
   // reads one declares the curve too): computed only when a metric asks.
   kMeshRipple = 32,         // per-period stiffness ripple (mesh_ripple.hpp)
   kTransmissionError = 64,  // loaded static transmission error per period (transmission_error.hpp)
+  // The drive as a vibrating system (dynamics/drive_dynamics.hpp): only the
+  // parts the requested metrics read (a K_V sweep, the response at the
+  // operating speed, the Floquet map); the natural frequencies always.
+  kDynamics = 128,
 };
 
 // A small set of models (bit set over Model).
@@ -66,6 +70,7 @@ enum class Requirement : std::uint8_t {
   kSpeed = 16,             // load.speed > 0 (drive power, pinion speed)
   kBodyHeight = 32,        // a rectangular rack body (rack.body_height), not an explicit section
   kRackLength = 64,        // a rack length for the pinion's share of the cost (metric option or duty.stroke)
+  kMovingMass = 128,       // problem `dynamics` section (dynamics.moving_mass > 0)
 };
 
 // How a metric uses its parameter.

@@ -15,6 +15,7 @@
 
 #include "rackopt/core/drive.hpp"
 #include "rackopt/core/error.hpp"
+#include "rackopt/dynamics/drive_dynamics.hpp"
 #include "rackopt/geometry/mesh_geometry.hpp"
 #include "rackopt/metrics/evaluate_metrics.hpp"
 #include "rackopt/metrics/mesh_dynamics_metrics.hpp"
@@ -70,6 +71,7 @@ struct ModelResults {
   ModelSlot<WearLifeResult> wear_slot;   // nominal life (from the wear model or the reliability run)
   ModelSlot<LifeAtR> life_at_R_slot;
   ModelSlot<ToothStress> stress_slot;
+  ModelSlot<DriveDynamics> dynamics_slot;  // only the parts the requested metrics read
 
   const MeshGeometry& geometry() const { return get(geometry_slot, "geometry"); }
   const StiffnessCurve& curve() const { return get(curve_slot, "stiffness_curve"); }
@@ -80,6 +82,7 @@ struct ModelResults {
   const WearLifeResult& wear_life() const { return get(wear_slot, "wear_life"); }
   const LifeAtR& life_at_R() const { return get(life_at_R_slot, "wear_reliability"); }
   const ToothStress& stress() const { return get(stress_slot, "stress"); }
+  const DriveDynamics& dynamics() const { return get(dynamics_slot, "dynamics"); }
 
  private:
   // A per-period figure of the curve: a failed curve fails it too.
