@@ -1,6 +1,6 @@
 // The drive train of the dynamic model (drive_train.hpp) from a drive's
 // `dynamics:` section and its mesh geometry (docs/models/dynamics.md,
-// "Drive train").
+// "Drive train inputs").
 //
 // Example:
 //   MeshGeometry g = build_mesh_geometry(drive);
