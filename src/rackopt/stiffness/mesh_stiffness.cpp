@@ -416,7 +416,7 @@ struct MeshStiffnessModel::Impl {
     // state mostly has them), and building each pair apart and copying it
     // in stalled on the copy's loads (both were the sample assembly's
     // slowest instructions).
-    static_assert(sizeof(PairState) == 160, "write every field of PairState below");
+    static_assert(sizeof(PairState) == 168, "write every field of PairState below");
     st.pairs.resize(static_cast<std::size_t>(std::max(j_hi - j_lo + 1, 0)));
     std::size_t k = 0;
     for (int j = j_hi; j >= j_lo; --j, ++k) {  // descending s: the pair nearest the pinion tip first
@@ -440,6 +440,7 @@ struct MeshStiffnessModel::Impl {
       p.spalled = lp.spalled;
       p.relief = relief ? relief->at(p.s) : 0.0;
       p.load_share = 0;
+      p.stiffness_share = 0;
       if (k < 2) law2[k] = lp.contact;
     }
     if (pair.contact_depends_on_force() && st.pairs.size() == 2 && st.pairs[0].relief <= 0 &&
@@ -548,6 +549,8 @@ struct MeshStiffnessModel::Impl {
     st.stiffness = F / approach;
     p1.load_share = f1 / F;
     p2.load_share = f2 / F;
+    p1.stiffness_share = p1.load_share;  // no relief here: the secant shares
+    p2.stiffness_share = p2.load_share;
     st.local_stiffness = 1.0 / p1.local() + 1.0 / p2.local();
     return true;
   }
@@ -646,6 +649,7 @@ struct MeshStiffnessModel::Impl {
     st.local_stiffness = 0;
     for (std::size_t j = 0; j < n; ++j) {
       st.pairs[j].load_share = f[j] / F;
+      st.pairs[j].stiffness_share = st.pairs[j].load_share;
       st.local_stiffness += 1.0 / st.pairs[j].local();
     }
   }
@@ -696,7 +700,26 @@ struct MeshStiffnessModel::Impl {
     st.local_stiffness = 0;
     for (std::size_t j = 0; j < n; ++j) {
       st.pairs[j].load_share = F > 0 ? lc.force[j] / F : 0.0;
+      st.pairs[j].stiffness_share = 0;
       if (lc.loaded[j]) st.local_stiffness += 1.0 / st.pairs[j].local();
+    }
+    // Each loaded pair's part of the tangent stiffness, u = C_A^-1 1 on the
+    // loaded set A (the forces are f = delta u - C_A^-1 e there, so
+    // sum_A u_i (delta - e_i) = F with C symmetric).
+    using Mat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 8, 8>;
+    using Vec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 8, 1>;
+    std::array<std::size_t, 8> active{};
+    std::size_t m = 0;
+    for (std::size_t j = 0; j < n && m < 8; ++j) {
+      if (lc.loaded[j]) active[m++] = j;
+    }
+    if (m > 0 && st.stiffness > 0) {
+      Mat CA(m, m);
+      for (std::size_t a = 0; a < m; ++a) {
+        for (std::size_t b = 0; b < m; ++b) CA(a, b) = C[active[a] * n + active[b]];
+      }
+      const Vec u = CA.llt().solve(Vec::Ones(m));
+      for (std::size_t a = 0; a < m; ++a) st.pairs[active[a]].stiffness_share = u[a] / st.stiffness;
     }
   }
 
@@ -714,6 +737,7 @@ struct MeshStiffnessModel::Impl {
       for (PairState& p : st.pairs) {
         p.body = 0;
         p.load_share = (1.0 / p.local()) / st.local_stiffness;
+        p.stiffness_share = p.load_share;
       }
       st.stiffness = st.local_stiffness;
       return;
@@ -723,7 +747,7 @@ struct MeshStiffnessModel::Impl {
       // The rack railway paper: the body compliance inside each pair, pairs in parallel.
       double k = 0;
       for (const PairState& p : st.pairs) k += 1.0 / (p.local() + p.body);
-      for (PairState& p : st.pairs) p.load_share = (1.0 / (p.local() + p.body)) / k;
+      for (PairState& p : st.pairs) p.stiffness_share = p.load_share = (1.0 / (p.local() + p.body)) / k;
       st.stiffness = k;
       return;
     }
@@ -739,6 +763,7 @@ struct MeshStiffnessModel::Impl {
         if (K > 0 && std::isfinite(K)) {
           st.stiffness = K;
           p.load_share = 1.0;
+          p.stiffness_share = 1.0;
           return;
         }
       }
@@ -782,8 +807,11 @@ struct MeshStiffnessModel::Impl {
       }
       if (worst == m || m == 1) {
         st.stiffness = K;
-        for (PairState& p : st.pairs) p.load_share = 0;
-        for (std::size_t a = 0; a < m; ++a) st.pairs[active[a]].load_share = std::max(f[a], 0.0) / K;
+        for (PairState& p : st.pairs) p.stiffness_share = p.load_share = 0;
+        for (std::size_t a = 0; a < m; ++a) {
+          PairState& p = st.pairs[active[a]];
+          p.stiffness_share = p.load_share = std::max(f[a], 0.0) / K;
+        }
         return;
       }
       for (std::size_t a = worst; a + 1 < m; ++a) active[a] = active[a + 1];

@@ -45,6 +45,13 @@ struct PairState {
   // carries this contact away from the pinion faster than the common
   // approach (the pair opens), or when its relief is not closed.
   double load_share = 0;
+  // This pair's part of the mesh stiffness K: (C_A^-1 1)_i / K over the pairs
+  // that carry load (C_A their flexibility matrix), so that
+  // sum_i K stiffness_share_i (delta - relief_i) = load.force at the static
+  // approach. Equals load_share without relief (f = delta C_A^-1 1 there); 0
+  // for a pair that carries no load. The dynamic model's mesh force law reads
+  // it (dynamics/mesh_force_law_builder.hpp).
+  double stiffness_share = 0;
 };
 
 // Mesh state at one travel position X.
