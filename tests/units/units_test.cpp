@@ -69,10 +69,13 @@ TEST(SiUnit, IsTheKindsUnitOfFactorOne) {
   EXPECT_EQ(si_unit(K::kDensity), "kg/m^3");
   EXPECT_EQ(si_unit(K::kSpeed), "m/s");
   EXPECT_EQ(si_unit(K::kPower), "W");
+  EXPECT_EQ(si_unit(K::kInertia), "kg*m^2");
+  EXPECT_EQ(si_unit(K::kTorsionalStiffness), "N*m/rad");
   EXPECT_EQ(si_unit(K::kDimensionless), "");
   EXPECT_EQ(si_unit(K::kCount), "");
   for (K k : {K::kLength, K::kAngle, K::kModulus, K::kForce, K::kTorque, K::kStiffness, K::kArea, K::kSecondMoment,
-              K::kTime, K::kHardness, K::kRate, K::kMass, K::kDensity, K::kSpeed, K::kPower}) {
+              K::kTime, K::kHardness, K::kRate, K::kMass, K::kDensity, K::kSpeed, K::kPower,
+              K::kInertia, K::kTorsionalStiffness}) {
     EXPECT_EQ(unit_factor(si_unit(k), k), 1.0) << kind_name(k);
   }
 }
@@ -298,6 +301,31 @@ TEST(ParseQuantity, NewKindErrorsListTheAllowedUnits) {
   expect_kind_error("3 yr", K::kRate, "'yr' is a unit of a time but a rate");
   // MPa belongs to modulus and hardness: a force names the first.
   expect_kind_error("3 MPa", K::kForce, "'MPa' is a unit of a modulus but a force is expected");
+}
+
+TEST(ParseQuantity, InertiaAndTorsionalStiffness) {
+  EXPECT_DOUBLE_EQ(parse_quantity("12 t", K::kMass), 12e3);
+  EXPECT_DOUBLE_EQ(parse_quantity("1500 kg", K::kMass), 1500.0);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.4", K::kInertia), 2.4);  // bare number: kg*m^2
+  EXPECT_DOUBLE_EQ(parse_quantity("2.4 kg*m^2", K::kInertia), 2.4);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.4 kg m^2", K::kInertia), 2.4);
+  EXPECT_DOUBLE_EQ(parse_quantity("2.4 kg\xC2\xB7m\xC2\xB2", K::kInertia), 2.4);  // kg·m²
+  EXPECT_DOUBLE_EQ(parse_quantity("35 kg*cm^2", K::kInertia), 35e-4);
+  EXPECT_DOUBLE_EQ(parse_quantity("3 t*m^2", K::kInertia), 3e3);
+  EXPECT_DOUBLE_EQ(parse_quantity("5e6", K::kTorsionalStiffness), 5e6);  // bare number: N*m/rad
+  EXPECT_DOUBLE_EQ(parse_quantity("5e6 N*m/rad", K::kTorsionalStiffness), 5e6);
+  EXPECT_DOUBLE_EQ(parse_quantity("5e6 N m/rad", K::kTorsionalStiffness), 5e6);
+  EXPECT_DOUBLE_EQ(parse_quantity("5000 kN m/rad", K::kTorsionalStiffness), 5e6);
+  EXPECT_DOUBLE_EQ(parse_quantity("5 MN*m/rad", K::kTorsionalStiffness), 5e6);
+  // Per degree: 1 N*m/deg is 180/pi N*m/rad (a twist of 1 deg is pi/180 rad).
+  EXPECT_NEAR(parse_quantity("100 N*m/deg", K::kTorsionalStiffness), 100 * 180 / 3.14159265358979323846, 1e-9);
+  EXPECT_EQ(format_quantity(2.4, K::kInertia), "2.4 kg*m^2");
+  EXPECT_EQ(format_quantity(5e6, K::kTorsionalStiffness, "MN*m/rad"), "5 MN*m/rad");
+  // A linear stiffness or a torque is not a torsional stiffness, and back.
+  expect_kind_error("5 N/m", K::kTorsionalStiffness, "'N/m' is a unit of a stiffness but a torsional stiffness is expected");
+  expect_kind_error("5 N*m", K::kTorsionalStiffness, "'N*m' is a unit of a torque");
+  expect_kind_error("5 N*m/rad", K::kStiffness, "'N*m/rad' is a unit of a torsional stiffness");
+  expect_kind_error("5 kg*m", K::kInertia, "unknown unit 'kg*m' for a moment of inertia; allowed units: kg*m^2, kg*cm^2, t*m^2");
 }
 
 TEST(UnitNames, NewKindsDefaultFirstAndOnlyPressureUnitsShared) {

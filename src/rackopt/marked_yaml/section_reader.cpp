@@ -41,6 +41,8 @@ std::string expected_quantity_text(QuantityKind kind) {
     case QuantityKind::kDensity: return "a density (e.g. 7850 kg/m^3)";
     case QuantityKind::kSpeed: return "a speed (e.g. 0.5 m/s, 2000 km/yr)";
     case QuantityKind::kPower: return "a power (e.g. 15 kW)";
+    case QuantityKind::kInertia: return "a moment of inertia (e.g. 2.4 kg*m^2)";
+    case QuantityKind::kTorsionalStiffness: return "a torsional stiffness (e.g. 5 MN*m/rad)";
   }
   return "a number";
 }

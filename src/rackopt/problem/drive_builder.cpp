@@ -7,7 +7,7 @@ namespace {
 
 const std::vector<std::string> kTopKeys = {"name",   "description", "variant",   "variants", "pinion",
                                            "rack",   "mounting",    "materials", "load",     "effects",
-                                           "faults", "numerics",    "wear",      "duty",     "reliability"};
+                                           "faults", "numerics",    "wear",      "duty",     "reliability", "dynamics"};
 
 }  // namespace
 
@@ -45,6 +45,7 @@ Drive build_drive(const MarkedNode& root, const std::string& file) {
   read_wear(top, drive);
   read_duty(top, drive);
   read_reliability(top, drive);
+  read_dynamics(top, drive);
   return drive;
 }
 

@@ -2,7 +2,8 @@
 // Drive (docs/yaml.md is the reference of every key). build_drive composes
 // them in the order that the later sections' derived limits need: geometry
 // first (the module bounds reliefs, wear depth and clearance), then load,
-// model settings, faults, wear, duty and reliability.
+// model settings, faults, wear, duty, reliability and dynamics (which checks
+// effects.dynamics against the load).
 #pragma once
 
 #include <map>
@@ -41,5 +42,8 @@ HardnessProfile read_hardness(const MarkedNode& node, const std::string& path);
 void read_wear(const SectionReader& top, Drive& drive);
 void read_duty(const SectionReader& top, Drive& drive);
 void read_reliability(const SectionReader& top, Drive& drive);
+// `dynamics` (docs/yaml.md): the drive as a vibrating system. Read after load
+// and effects: effects.dynamics needs a moving mass and load.speed.
+void read_dynamics(const SectionReader& top, Drive& drive);
 
 }  // namespace rackopt

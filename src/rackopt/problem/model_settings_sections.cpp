@@ -10,7 +10,7 @@ void read_effects(const SectionReader& top, Drive& drive) {
       problem_section(top.get("effects"), "effects", "effects", top.mark(),
                       {"pinion_tooth", "root_segment", "fillet_foundation", "fillet_calibration", "rack_tooth",
                        "rack_foundation", "hertz", "pair_coupling", "rack_span", "supported_rack", "couple_term",
-                       "body_axial", "body_shear", "interference_limit", "spalling"});
+                       "body_axial", "body_shear", "interference_limit", "spalling", "dynamics"});
   Effects& e = drive.effects;
   const Effects defaults;
   e.pinion_tooth = fx.flag("pinion_tooth", defaults.pinion_tooth);
@@ -42,6 +42,7 @@ void read_effects(const SectionReader& top, Drive& drive) {
   e.body_shear = fx.flag("body_shear", defaults.body_shear);
   e.interference_limit = fx.flag("interference_limit", defaults.interference_limit);
   e.spalling = fx.flag("spalling", defaults.spalling);
+  e.dynamics = fx.flag("dynamics", defaults.dynamics);  // read_dynamics checks what it needs
   if (!e.any_compliance()) {
     throw InputError(top.key_mark("effects"), "effects",
                      "every compliance is switched off (pinion_tooth, fillet_foundation, rack_tooth, hertz: off, "

@@ -125,6 +125,22 @@ constexpr KeySpec kKeySpecs[] = {
     {"duty.travel_per_year", {QuantityKind::kSpeed, {1.0 / kSecondsPerYear, 1e9 / kSecondsPerYear, false, false}}},
     {"duty.strokes_per_year", {QuantityKind::kRate, {1e-3 / kSecondsPerYear, 1e12 / kSecondsPerYear, false, false}}},
     {"duty.stroke", {QuantityKind::kLength, {1e-3, 1e5, false, false}}},
+    // Dynamics (docs/models/dynamics.md). The moving mass per pinion: a
+    // gram-scale instrument slide to ten times a ship lift chamber's share.
+    {"dynamics.moving_mass", {QuantityKind::kMass, {1e-3, 1e9, false, false}}},
+    // Motor + gearbox reduced to the pinion shaft, J_motor i^2: a small servo
+    // (1e-5 kg m^2) without gearbox up to a ship lift's motor through i ~ 200;
+    // 0 = none (the pinion's own inertia only).
+    {"dynamics.drive_inertia", {QuantityKind::kInertia, {1e-9, 1e7, false, false}, true}},
+    // Torsional stiffness from the drive to the pinion; 0 = rigid drive train.
+    {"dynamics.drive_stiffness", {QuantityKind::kTorsionalStiffness, {1e-3, 1e12, false, false}, true}},
+    // Of critical damping: 0 (undamped) up to, not including, critical.
+    {"dynamics.damping_ratio", {QuantityKind::kDimensionless, {0, 1, false, true}}},
+    // Sweep speeds are positive (the travel direction of the load): a range
+    // that reaches 0 would excite nothing there. 50 m/s as load.speed.
+    {"dynamics.speed_range.from", {QuantityKind::kSpeed, {0, 50, true, false}}},
+    {"dynamics.speed_range.to", {QuantityKind::kSpeed, {0, 50, true, false}}},
+    {"dynamics.speed_range.points", {QuantityKind::kCount, {1, 1000, false, false}}},
     {"reliability.samples", {QuantityKind::kCount, {kSamplesLimit.lo, kSamplesLimit.hi, false, false}}},
     {"reliability.seed", {QuantityKind::kCount, {kSeedLimit.lo, kSeedLimit.hi, false, false}}},
     {"reliability.ks_level", {QuantityKind::kDimensionless, {0.001, 0.5, false, false}}},

@@ -27,7 +27,8 @@ std::vector<std::string> numeric_key_examples() {
       "mounting.clearance",  "load.force",        "load.torque",                  "faults[0].depth",
       "faults[0].length",    "faults[0].width",   "faults[0].start",              "wear.coefficient",
       "wear.max_depth",      "wear.rack_hardness.case_depth", "wear.rack_hardness.surface",
-      "wear.pinion_hardness.case_depth"};
+      "wear.pinion_hardness.case_depth", "dynamics.moving_mass", "dynamics.drive_inertia",
+      "dynamics.drive_stiffness", "dynamics.damping_ratio"};
   std::vector<std::string> out;
   for (const char* k : kCandidates) {
     if (problem_key_kind(k)) out.emplace_back(k);

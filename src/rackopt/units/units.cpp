@@ -85,6 +85,17 @@ constexpr UnitDef kUnits[] = {
     {"W", QuantityKind::kPower, 1.0},
     {"kW", QuantityKind::kPower, 1e3},
     {"MW", QuantityKind::kPower, 1e6},
+    // Motor catalogues give rotor inertias in kg*m^2, small servo motors in
+    // kg*cm^2; a ship lift's drum or counterweight sheave reaches t*m^2.
+    {"kg*m^2", QuantityKind::kInertia, 1.0},
+    {"kg*cm^2", QuantityKind::kInertia, 1e-4},
+    {"t*m^2", QuantityKind::kInertia, 1e3},
+    // Torque per radian of twist (a shaft, coupling or gearbox); N*m/deg is
+    // how some gearbox catalogues state it (Nm/arcmin is not accepted).
+    {"N*m/rad", QuantityKind::kTorsionalStiffness, 1.0},
+    {"kN*m/rad", QuantityKind::kTorsionalStiffness, 1e3},
+    {"MN*m/rad", QuantityKind::kTorsionalStiffness, 1e6},
+    {"N*m/deg", QuantityKind::kTorsionalStiffness, 180.0 / 3.14159265358979323846},
 };
 
 // Word spellings of the canonical names above, after normalize_unit.
@@ -210,6 +221,8 @@ std::string example(QuantityKind kind) {
     case QuantityKind::kDensity: return "'7850 kg/m^3'";
     case QuantityKind::kSpeed: return "'0.5 m/s'";
     case QuantityKind::kPower: return "'15 kW'";
+    case QuantityKind::kInertia: return "'2.4 kg*m^2'";
+    case QuantityKind::kTorsionalStiffness: return "'5 MN*m/rad'";
   }
   return "";
 }
@@ -283,6 +296,8 @@ std::string_view kind_name(QuantityKind kind) {
     case QuantityKind::kDensity: return "density";
     case QuantityKind::kSpeed: return "speed (length per time)";
     case QuantityKind::kPower: return "power";
+    case QuantityKind::kInertia: return "moment of inertia";
+    case QuantityKind::kTorsionalStiffness: return "torsional stiffness";
   }
   return "quantity";
 }

@@ -5,7 +5,8 @@
 // number means the default unit of its kind, ONE per kind so that a reader
 // never has to remember a per-key convention:
 //   length mm, angle deg, modulus GPa, force N, torque N*m, stiffness N/m,
-//   area mm^2, second moment mm^4, time yr, hardness HB, rate 1/yr;
+//   area mm^2, second moment mm^4, time yr, hardness HB, rate 1/yr,
+//   mass kg, inertia kg*m^2, torsional stiffness N*m/rad;
 //   dimensionless and count take no unit.
 // Time and rate are SI inside (s, 1/s) like everything else; years are only
 // the default for writing, because lives and duty are thought of in years.
@@ -40,6 +41,8 @@ enum class QuantityKind {
   kDensity,        // kg/m^3, g/cm^3, t/m^3
   kSpeed,          // m/s, mm/s, m/min, km/h, m/yr, km/yr (a travel per year is a speed); SI m/s
   kPower,          // W, kW, MW
+  kInertia,        // mass moment of inertia: kg*m^2 (also kg m^2, kg·m²), kg*cm^2, t*m^2
+  kTorsionalStiffness,  // N*m/rad (also N m/rad), kN*m/rad, MN*m/rad, N*m/deg
 };
 
 // "length", "angle", ... with an article-free noun used in messages.
