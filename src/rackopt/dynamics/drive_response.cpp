@@ -54,8 +54,9 @@ double periodic_error(const DriveStepper& st, const State& a, const State& b) {
 }
 
 // Mesh force and approach over the recorded period, resampled on history_points travels.
-void summarize(const DriveStepper& st, const MeshForceLaw& law, const std::vector<Sample>& rec,
-               const detail::PeriodOutcome& po, const DynamicsOptions& o, SteadyResponse& r) {
+void summarize(const DriveStepper& st, const MeshForceLaw& law, std::vector<Sample>& rec,
+               detail::PeriodOutcome& po, const DynamicsOptions& o, SteadyResponse& r) {
+  st.analyze(rec, po);
   r.mesh_force_max = r.dte_max = -std::numeric_limits<double>::infinity();
   r.mesh_force_min = r.dte_min = std::numeric_limits<double>::infinity();
   for (const Sample& s : rec) {
