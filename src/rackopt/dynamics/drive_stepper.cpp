@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rackopt::detail {
 namespace {
@@ -76,15 +77,24 @@ DriveStepper::DriveStepper(const DriveTrain& train, const MeshForceLaw& law, dou
     fail("speed: " + std::to_string(speed) + " m/s needs " + std::to_string(want) +
          " time steps per excitation period (limit 2e7); the response at this speed is the static one");
   const int N = std::max(1, static_cast<int>(std::ceil(want)));
-  std::vector<double> grid(N + 1);
-  for (int i = 0; i <= N; ++i) grid[i] = law.period * i / N;
-  grid.back() = law.period;
+  // (travel, is a jump): a uniform point within rounding of a jump becomes
+  // the jump itself, so the step after it starts on the jump's right limit
+  // (a point one ulp short of it would read the left limit and cost RK4 its
+  // order at every tooth change).
+  std::vector<std::pair<double, bool>> grid;
+  grid.reserve(N + 1 + law.travel.size() / 2);
+  for (int i = 0; i <= N; ++i) grid.emplace_back(i == N ? law.period : law.period * i / N, false);
   for (size_t i = 0; i + 1 < law.travel.size(); ++i)
-    if (law.travel[i] == law.travel[i + 1]) grid.push_back(law.travel[i]);
+    if (law.travel[i] == law.travel[i + 1]) grid.emplace_back(law.travel[i], true);
   std::sort(grid.begin(), grid.end());
-  const double eps = 1e-12 * law.period;
-  for (double x : grid)
-    if (grid_.empty() || x - grid_.back() > eps) grid_.push_back(x);
+  const double eps = 1e-9 * law.period / N;
+  for (const auto& [x, jump] : grid) {
+    if (grid_.empty() || x - grid_.back() > eps) {
+      grid_.push_back(x);
+    } else if (jump && grid_.size() > 1) {
+      grid_.back() = x;
+    }
+  }
   if (grid_.back() < law.period) grid_.back() = law.period;
 
   // Slots at each stage point of each step (start, middle, end).
@@ -231,11 +241,16 @@ double DriveStepper::crossing(const SlotsView& a, const SlotsView& b, const Stat
 void DriveStepper::substep(State& z, double xa, double xb, int depth, std::vector<Sample>* record,
                            PeriodOutcome& out, const SlotsView* cached) const {
   const double h = (xb - xa) / speed_;
-  MeshAt ma, mm, mb;
+  // Split steps interpolate the law at their own travels, into per-depth
+  // scratch kept across calls (no allocation per event once warm).
+  thread_local MeshAt scratch[5][3];
   SlotsView a, m, b;
   if (cached) {
     a = cached[0]; m = cached[1]; b = cached[2];
   } else {
+    MeshAt& ma = scratch[depth][0];
+    MeshAt& mm = scratch[depth][1];
+    MeshAt& mb = scratch[depth][2];
     const double xm = 0.5 * (xa + xb);
     slots_at(law_, xa, interval_of(law_, xa, -1), ma);
     slots_at(law_, xm, interval_of(law_, xm, -1), mm);
