@@ -2,8 +2,14 @@
 // one steady response over a support span of 100 mesh periods, its Floquet
 // multipliers, and a 50-speed sweep (up and down).
 //   ./build/dynamics_bench --benchmark_repetitions=3
+//   ./build/dynamics_bench --accuracy      the "Dynamics" tables of docs/accuracy.md
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "dynamics_law.hpp"
@@ -55,4 +61,66 @@ void BM_Sweep50(benchmark::State& state) {
 }
 BENCHMARK(BM_Sweep50)->Unit(benchmark::kMillisecond);
 
+// Error against a converged reference versus time, for each fidelity knob.
+struct Row {
+  const char* knob;
+  int spm, spn;
+  double tol;
+};
+
+int accuracy_table() {
+  const auto law = representative_law();
+  const auto train = representative_train();
+  for (double ratio : {0.3, 1.5, 0.5}) {
+    const double v = speed_at(ratio);
+    rackopt::DynamicsOptions ref;
+    ref.steps_per_mesh_period = 1024;
+    ref.steps_per_natural_period = 512;
+    ref.periodic_tolerance = 1e-9;
+    ref.max_periods = 300;
+    const auto r0 = rackopt::steady_response(train, law, v, 2e4, ref);
+    std::printf("\nmesh frequency %.2f x natural frequency (v = %.3f m/s); reference K_V = %.6f, DTE p-p = %.4f um, %d periods\n",
+                ratio, v, r0.dynamic_factor, r0.dte_peak_to_peak * 1e6, r0.periods);
+    std::printf("| knob | steps/mesh period | steps/natural period | periodic tolerance | K_V error | DTE p-p error | periods | time [ms] |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    const Row rows[] = {
+        {"steps_per_mesh_period", 16, 8, 1e-6},  {"steps_per_mesh_period", 32, 8, 1e-6},
+        {"steps_per_mesh_period", 64, 8, 1e-6},  {"steps_per_mesh_period", 128, 8, 1e-6},
+        {"steps_per_mesh_period", 256, 8, 1e-6}, {"steps_per_natural_period", 16, 16, 1e-6},
+        {"steps_per_natural_period", 16, 32, 1e-6}, {"steps_per_natural_period", 16, 64, 1e-6},
+        {"default", 64, 32, 1e-6},
+        {"periodic_tolerance", 64, 32, 1e-2}, {"periodic_tolerance", 64, 32, 1e-4},
+        {"periodic_tolerance", 64, 32, 1e-8}, {"steps_per_mesh_period", 128, 32, 1e-6},
+    };
+    for (const Row& row : rows) {
+      rackopt::DynamicsOptions o;
+      o.steps_per_mesh_period = row.spm;
+      o.steps_per_natural_period = row.spn;
+      o.periodic_tolerance = row.tol;
+      o.max_periods = 300;
+      double best = 1e300;
+      rackopt::SteadyResponse r;
+      for (int rep = 0; rep < 3; ++rep) {
+        const auto t0 = std::chrono::steady_clock::now();
+        r = rackopt::steady_response(train, law, v, 2e4, o);
+        best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      }
+      std::printf("| %s | %d | %d | %.0e | %.1e | %.1e | %d | %.2f |\n", row.knob, row.spm, row.spn, row.tol,
+                  std::abs(r.dynamic_factor - r0.dynamic_factor) / r0.dynamic_factor,
+                  std::abs(r.dte_peak_to_peak - r0.dte_peak_to_peak) / r0.dte_peak_to_peak, r.periods, best);
+    }
+  }
+  return 0;
+}
+
 }  // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--accuracy") == 0) return accuracy_table();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -26,15 +26,14 @@ inline MeshForceLaw representative_law() {
     law.gap.insert(law.gap.end(), {0.0, gb});
   };
   for (int i = 0; i < periods; ++i) {
-    const double x0 = i * p;
     // Two pairs over [0, 0.6 p): the entering one (slot 1) behind its relief.
     for (int j = 0; j <= 6; ++j) {
-      const double u = 0.1 * j;  // fraction of p
+      const double u = j / 10.0;  // fraction of p
       const double g = u < 0.2 ? relief * std::pow(1 - u / 0.2, 2) : 0.0;
-      add(x0 + u * p, k1, k1, g);
+      add((i + u) * p, k1, k1, g);
     }
-    add(x0 + 0.6 * p, k1, 0, 0);  // the leaving pair drops out: jump to one pair
-    add(x0 + p, k1, 0, 0);  // the next period's first sample makes the jump back to two pairs
+    add((i + 0.6) * p, k1, 0, 0);  // the leaving pair drops out: jump to one pair
+    add((i + 1.0) * p, k1, 0, 0);  // the next period's first sample makes the jump back to two pairs
   }
   law.period = law.travel.back();
   return law;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "dynamics/dynamics_test_support.hpp"
 #include "rackopt/dynamics/drive_transient.hpp"
@@ -49,6 +50,48 @@ TEST(LinearResponse, HarmonicKinematicErrorAmplitudeAndPhase) {
     EXPECT_NEAR(mean, fs / k + a, 1e-4 * A);
     EXPECT_NEAR(r.dte_peak_to_peak / (2 * A), 1.0, 1e-3);
     EXPECT_EQ(r.contact_loss_fraction, 0.0);
+  }
+}
+
+// With a drive spring: M_r y'' + C y' + K y = f + e0 k g(t), C = diag(c_mesh,
+// c_drive) with c_drive = 2 zeta sqrt(k_d J_m J_p / (J_m + J_p)) (the twist's
+// own critical damping, the mesh free). The delta harmonic is the first
+// component of (K - W^2 M_r + i W C)^-1 e0 k a, from the 3-DOF masses.
+TEST(LinearResponse, DriveSpringHarmonicResponse) {
+  DriveTrain t = dyntest::rigid_train();
+  t.drive_stiffness = 2e5;
+  const double k = 8e8, a = 1e-6, period = 0.02, fs = 16e3, zeta = 0.05;
+  const double Jm = t.drive_inertia, Jp = t.pinion_inertia, rb = t.base_radius, c = std::cos(t.pressure_angle);
+  // [M_g^-1]_yy from the coordinate map (delta, phi) = (r_b th_p - c x, th_m - th_p).
+  Eigen::Matrix2d Ginv;
+  Ginv << rb * rb / Jp + c * c / t.moving_mass, -rb / Jp, -rb / Jp, 1 / Jm + 1 / Jp;
+  const Eigen::Matrix2d Mr = Ginv.inverse();
+  const double m_mesh = 1 / Ginv(0, 0);
+  const double cm = 2 * zeta * std::sqrt(k * m_mesh), cd = 2 * zeta * std::sqrt(t.drive_stiffness * Jm * Jp / (Jm + Jp));
+  const MeshForceLaw law = dyntest::harmonic_gap_law(k, a, period, 2000);
+  DynamicsOptions o;
+  o.damping_ratio = zeta;
+  o.steps_per_mesh_period = 512;
+  o.steps_per_natural_period = 256;
+  o.history_points = 4000;
+  const auto f = natural_frequencies_hz(t, k);
+  for (double W : {0.8 * 2 * M_PI * f[1], 1.1 * 2 * M_PI * f[1], 3 * 2 * M_PI * f[0]}) {
+    const double v = W * period / (2 * M_PI);
+    Eigen::Matrix2cd D;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) D(i, j) = std::complex<double>(-W * W * Mr(i, j), 0);
+    D(0, 0) += std::complex<double>(k, W * cm);
+    D(1, 1) += std::complex<double>(t.drive_stiffness, W * cd);
+    // Forcing k a sin(W t) = Im(k a e^{iWt}): delta's harmonic Im(Y0 e^{iWt}).
+    const Eigen::Vector2cd Y = D.fullPivLu().solve(Eigen::Vector2cd(k * a, 0));
+    const SteadyResponse r = steady_response(t, law, v, fs, o);
+    ASSERT_EQ(r.status, ResponseStatus::kConverged) << r.message;
+    double a1, b1;
+    first_harmonic(r.dte, a1, b1);
+    // Im(Y e^{i th}) = Im(Y) cos th + Re(Y) sin th.
+    const double A = std::abs(Y(0));
+    EXPECT_NEAR(b1 / A, Y(0).real() / A, 1e-4) << "W " << W;
+    EXPECT_NEAR(a1 / A, Y(0).imag() / A, 1e-4) << "W " << W;
   }
 }
 

@@ -54,15 +54,51 @@ double periodic_error(const DriveStepper& st, const State& a, const State& b) {
 }
 
 // Mesh force and approach over the recorded period, resampled on history_points travels.
-void summarize(const DriveStepper& st, const MeshForceLaw& law, const std::vector<Sample>& rec,
-               const detail::PeriodOutcome& po, const DynamicsOptions& o, SteadyResponse& r) {
+void summarize(const DriveStepper& st, const MeshForceLaw& law, std::vector<Sample>& rec,
+               detail::PeriodOutcome& po, const DynamicsOptions& o, SteadyResponse& r) {
+  st.analyze(rec, po);
   r.mesh_force_max = r.dte_max = -std::numeric_limits<double>::infinity();
   r.mesh_force_min = r.dte_min = std::numeric_limits<double>::infinity();
-  for (const Sample& s : rec) {
-    r.mesh_force_max = std::max(r.mesh_force_max, s.force);
-    r.mesh_force_min = std::min(r.mesh_force_min, s.force);
-    r.dte_max = std::max(r.dte_max, s.delta);
-    r.dte_min = std::min(r.dte_min, s.delta);
+  auto take = [&](double f, double d) {
+    r.mesh_force_max = std::max(r.mesh_force_max, f);
+    r.mesh_force_min = std::min(r.mesh_force_min, f);
+    r.dte_max = std::max(r.dte_max, d);
+    r.dte_min = std::min(r.dte_min, d);
+  };
+  for (size_t i = 0; i < rec.size(); ++i) {
+    take(rec[i].force, rec[i].delta);
+    if (i == 0) continue;
+    // Extremes inside a step: where the step's cubic Hermite in delta has
+    // zero slope (the step ends alone would cut peaks by O(h^2)).
+    const Sample& a = rec[i - 1];
+    const Sample& b = rec[i];
+    const double h = (b.x - a.x) / r.speed;
+    if (!(h > 0)) continue;
+    const double m0 = h * a.rate, m1 = h * b.rate;
+    const double qa = 6 * a.delta + 3 * m0 - 6 * b.delta + 3 * m1;
+    const double qb = -6 * a.delta - 4 * m0 + 6 * b.delta - 2 * m1;
+    const double qc = m0;
+    double roots[2];
+    int nr = 0;
+    if (std::abs(qa) > 1e-300) {
+      const double disc = qb * qb - 4 * qa * qc;
+      if (disc >= 0) {
+        const double sq = std::sqrt(disc);
+        roots[nr++] = (-qb - sq) / (2 * qa);
+        roots[nr++] = (-qb + sq) / (2 * qa);
+      }
+    } else if (std::abs(qb) > 1e-300) {
+      roots[nr++] = -qc / qb;
+    }
+    for (int k = 0; k < nr; ++k) {
+      const double t = roots[k];
+      if (!(t > 0 && t < 1)) continue;
+      const double t2 = t * t, t3 = t2 * t;
+      const double d = (2 * t3 - 3 * t2 + 1) * a.delta + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * b.delta +
+                       (t3 - t2) * m1;
+      const double x = a.x + t * (b.x - a.x);
+      take(st.mesh_force(std::min(x, std::nextafter(law.period, 0.0)), d, (1 - t) * a.rate + t * b.rate), d);
+    }
   }
   const int N = o.history_points;
   r.travel.resize(N);

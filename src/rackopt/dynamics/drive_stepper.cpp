@@ -2,10 +2,12 @@
 #include "rackopt/dynamics/drive_stepper.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace rackopt::detail {
 namespace {
@@ -75,20 +77,33 @@ DriveStepper::DriveStepper(const DriveTrain& train, const MeshForceLaw& law, dou
     fail("speed: " + std::to_string(speed) + " m/s needs " + std::to_string(want) +
          " time steps per excitation period (limit 2e7); the response at this speed is the static one");
   const int N = std::max(1, static_cast<int>(std::ceil(want)));
-  std::vector<double> grid(N + 1);
-  for (int i = 0; i <= N; ++i) grid[i] = law.period * i / N;
-  grid.back() = law.period;
+  // (travel, is a jump): a uniform point within rounding of a jump becomes
+  // the jump itself, so the step after it starts on the jump's right limit
+  // (a point one ulp short of it would read the left limit and cost RK4 its
+  // order at every tooth change).
+  std::vector<std::pair<double, bool>> grid;
+  grid.reserve(N + 1 + law.travel.size() / 2);
+  for (int i = 0; i <= N; ++i) grid.emplace_back(i == N ? law.period : law.period * i / N, false);
   for (size_t i = 0; i + 1 < law.travel.size(); ++i)
-    if (law.travel[i] == law.travel[i + 1]) grid.push_back(law.travel[i]);
+    if (law.travel[i] == law.travel[i + 1]) grid.emplace_back(law.travel[i], true);
   std::sort(grid.begin(), grid.end());
-  const double eps = 1e-12 * law.period;
-  for (double x : grid)
-    if (grid_.empty() || x - grid_.back() > eps) grid_.push_back(x);
+  const double eps = 1e-9 * law.period / N;
+  for (const auto& [x, jump] : grid) {
+    if (grid_.empty() || x - grid_.back() > eps) {
+      grid_.push_back(x);
+    } else if (jump && grid_.size() > 1) {
+      grid_.back() = x;
+    }
+  }
   if (grid_.back() < law.period) grid_.back() = law.period;
 
   // Slots at each stage point of each step (start, middle, end).
   const int S = steps();
+  off_.reserve(3 * S + 1);
   off_.assign(1, 0);
+  k_.reserve(3 * S * law.slots);
+  g_.reserve(3 * S * law.slots);
+  idx_.reserve(3 * S * law.slots);
   kt_.resize(3 * S);
   ds_.resize(3 * S);
   MeshAt m;
@@ -226,11 +241,16 @@ double DriveStepper::crossing(const SlotsView& a, const SlotsView& b, const Stat
 void DriveStepper::substep(State& z, double xa, double xb, int depth, std::vector<Sample>* record,
                            PeriodOutcome& out, const SlotsView* cached) const {
   const double h = (xb - xa) / speed_;
-  MeshAt ma, mm, mb;
+  // Split steps interpolate the law at their own travels, into per-depth
+  // scratch kept across calls (no allocation per event once warm).
+  thread_local MeshAt scratch[5][3];
   SlotsView a, m, b;
   if (cached) {
     a = cached[0]; m = cached[1]; b = cached[2];
   } else {
+    MeshAt& ma = scratch[depth][0];
+    MeshAt& mm = scratch[depth][1];
+    MeshAt& mb = scratch[depth][2];
     const double xm = 0.5 * (xa + xb);
     slots_at(law_, xa, interval_of(law_, xa, -1), ma);
     slots_at(law_, xm, interval_of(law_, xm, -1), mm);
@@ -243,7 +263,7 @@ void DriveStepper::substep(State& z, double xa, double xb, int depth, std::vecto
     z = z1;
     return;
   }
-  if (depth < 4) {
+  if (depth < 4 && signature(a, z) != signature(b, z1)) {
     const double t = crossing(a, b, z, z1, h);
     if (t > 1e-6 && t < 1 - 1e-6) {
       const double xc = xa + t * (xb - xa);
@@ -252,26 +272,51 @@ void DriveStepper::substep(State& z, double xa, double xb, int depth, std::vecto
       return;
     }
   }
-  if (record) {
-    // A step between switches has one contact state: its middle tells it.
-    State d0, d1;
-    deriv(a, z, d0);
-    deriv(b, z1, d1);
-    const double dm = hermite(z[0], z1[0], h * z[2], h * z1[2], 0.5);
-    const double rm = hermite(z[2], z1[2], h * d0[2], h * d1[2], 0.5);
-    if (total_force(m, dm, rm) == 0) out.no_load_time += h;
-    const double f1 = total_force(b, z1[0], z1[2]);
-    if (f1 < 0) out.back_flank = true;
-    record->push_back({xb, z1[0], z1[2], f1});
-  }
+  if (record) record->push_back({xb, z1[0], z1[2], 0.0});
   z = z1;
+}
+
+std::uint64_t DriveStepper::signature(const SlotsView& s, const State& z) const {
+  // Bit per law slot: front closed (low half), back closed (high half); bit
+  // 63: the contact force is positive while a flank touches.
+  std::uint64_t sig = 0;
+  bool front = false, back = false;
+  double fe = 0, fb = 0;
+  const double d = z[0], bl = law_.backlash;
+  for (int i = 0; i < s.n; ++i) {
+    const int j = s.idx[i] % 31;
+    if (d > s.g[i]) { sig |= std::uint64_t{1} << j; front = true; fe += s.k[i] * (d - s.g[i]); }
+    else if (-d - bl - s.g[i] > 0) { sig |= std::uint64_t{1} << (31 + j); back = true; fb += s.k[i] * (-d - bl - s.g[i]); }
+  }
+  if ((front && fe + cm_ * z[2] > 0) || (!front && back && -fb + cm_ * z[2] < 0)) sig |= std::uint64_t{1} << 63;
+  return sig;
+}
+
+void DriveStepper::analyze(std::vector<Sample>& rec, PeriodOutcome& out) const {
+  // Force at each recorded point; a step between switches has one contact
+  // state, which its middle (cubic Hermite in delta) tells.
+  MeshAt m;
+  int hint = -1;
+  for (size_t i = 0; i < rec.size(); ++i) {
+    Sample& s = rec[i];
+    const double x = std::min(s.x, std::nextafter(law_.period, 0.0));
+    slots_at(law_, x, hint = interval_of(law_, x, hint), m);
+    s.force = total_force(m.view(), s.delta, s.rate);
+    if (s.force < 0) out.back_flank = true;
+    if (i == 0) continue;
+    const Sample& a = rec[i - 1];
+    const double h = (s.x - a.x) / speed_, xm = 0.5 * (a.x + s.x);
+    const double dm = hermite(a.delta, s.delta, h * a.rate, h * s.rate, 0.5);
+    slots_at(law_, xm, interval_of(law_, xm, hint), m);
+    if (total_force(m.view(), dm, 0.5 * (a.rate + s.rate)) == 0) out.no_load_time += h;
+  }
 }
 
 PeriodOutcome DriveStepper::nonlinear_period(State& z, std::vector<Sample>* record) const {
   PeriodOutcome out;
   if (record) {
     record->clear();
-    record->push_back({0.0, z[0], z[2], total_force(stage(0), z[0], z[2])});
+    record->push_back({0.0, z[0], z[2], 0.0});
   }
   SlotsView v[3];
   for (int s = 0; s < steps() && !out.unbounded; ++s) {

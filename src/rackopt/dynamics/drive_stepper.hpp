@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -47,6 +48,9 @@ class DriveStepper {
   // Advances z over one period of the full (nonlinear) model; appends the
   // step ends to `record` when given.
   PeriodOutcome nonlinear_period(State& z, std::vector<Sample>* record) const;
+  // Fills the recorded points' forces and `out`'s contact statistics
+  // (no-load time, back flank) for a period recorded by nonlinear_period.
+  void analyze(std::vector<Sample>& record, PeriodOutcome& out) const;
   // Total mesh force (contact damping included, never pulling) at travel X in [0, period).
   double mesh_force(double X, double delta, double rate) const;
 
@@ -55,6 +59,9 @@ class DriveStepper {
     return {k_.data() + off_[p], g_.data() + off_[p], idx_.data() + off_[p], off_[p + 1] - off_[p]};
   }
   double total_force(const SlotsView& s, double delta, double rate) const;
+  // Contact state (which slots are closed on which flank, force positive):
+  // a step whose ends differ holds a switch.
+  std::uint64_t signature(const SlotsView& s, const State& z) const;
   void deriv(const SlotsView& s, const State& z, State& dz) const;
   State rk4(const State& z, double h, const SlotsView& a, const SlotsView& m, const SlotsView& b) const;
   // First switching function to change sign over the step, as a fraction
