@@ -248,6 +248,9 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
   // (X, (side, rack tooth)) where a corner slot starts or stops inside the period.
   std::vector<std::pair<double, std::pair<int, int>>> limits;
   if (options.corner_contact && have_a0 && k_local_min > 0) {
+    std::vector<double> travels;
+    travels.reserve(curve.samples.size());
+    for (const MeshState& st : curve.samples) travels.push_back(st.travel);
     const double limit = options.corner_reach * F / k_local_min;
     b.s_tip_reach = b.reach(g.path.s_end, +1, limit);
     b.s_root_reach = b.reach(g.path.s_start, -1, limit);
@@ -260,7 +263,12 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
       const int j_lo = static_cast<int>(std::floor((s_lim - b.A0) / b.pb)) - 1;
       const int j_hi = static_cast<int>(std::ceil((s_lim + law.period * b.ca - b.A0) / b.pb)) + 1;
       for (int j = j_lo; j <= j_hi; ++j) {
-        const double X = b.travel_at(j, s_lim);
+        double X = b.travel_at(j, s_lim);
+        // Not onto a curve sample: a travel holds at most two samples (one
+        // jump). Moved 1e-9 p towards the side where the slot is off instead.
+        const double tol = 1e-9 * law.mesh_pitch;
+        const auto near = std::lower_bound(travels.begin(), travels.end(), X - tol);
+        if (near != travels.end() && *near <= X + tol) X = *near + (side > 0 ? -tol : tol);
         if (X > 0 && X < law.period) limits.push_back({X, {side, j}});
       }
     }
