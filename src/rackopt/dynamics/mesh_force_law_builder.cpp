@@ -229,6 +229,10 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
   if (!(options.corner_reach > 0) || !std::isfinite(options.corner_reach)) {
     throw std::invalid_argument("mesh force law: corner_reach must be > 0");
   }
+  if (drive.load.force != model.drive().load.force || drive.mounting.clearance != model.drive().mounting.clearance ||
+      drive.rack.span != model.drive().rack.span) {
+    throw std::invalid_argument("mesh force law: `drive` is not the stiffness model's drive");
+  }
   const MeshGeometry& g = model.geometry();
   const StiffnessCurve curve = model.curve(CurveDetail::kFull, positions_per_period);
   if (curve.samples.empty()) throw std::invalid_argument("mesh force law: the stiffness curve has no samples");
