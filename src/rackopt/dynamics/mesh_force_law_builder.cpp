@@ -30,50 +30,66 @@ double pinion_corner_gap(double r_b, double R_c, double s) {
   return r_b * std::asin(std::clamp(s / R_c, -1.0, 1.0)) - s + r_b * involute(alpha_c);
 }
 
-// The depth (below the pinion centre, perpendicular to the rack) of the point
-// (a, b): the rack axis direction is -sin(alpha) n + cos(alpha) d, the
-// downward normal to it cos(alpha) n + sin(alpha) d.
-double depth_of(double a, double b, double ca, double sa) { return a * ca + b * sa; }
 
 }  // namespace
 
-std::optional<double> corner_gap(const Drive& drive, const MeshGeometry& g, double s) {
+std::optional<double> corner_gap(const MeshGeometry& g, double s) {
   const ContactPath& path = g.path;
   if (s > path.s_start && s < path.s_end) return std::nullopt;
   const double r_b = g.pinion.base_radius;
   const double a0 = g.pressure_angle;
   const double ca = std::cos(a0), sa = std::sin(a0);
-  const double m = drive.pinion.module;
-  // The rack's straight flank runs from its tip line down to where the root
-  // round (radius rho, tangent to flank and root line) starts, rho (1 - sin a0)
-  // above the root line.
-  const double datum_depth = g.pinion.pitch_radius + g.profile_shift_length + g.clearance;
-  const double rho = drive.rack.root_radius > 0 ? drive.rack.root_radius : drive.pinion.tip_radius_coef * m;
-  const double depth_tip = datum_depth - g.rack.addendum;
-  const double depth_root = datum_depth + g.rack.dedendum - rho * (1 - sa);
   const double tol = 1e-9 * g.rack.pitch;
-  auto pinion_corner = [&](double R_c) -> std::optional<double> {
+  // Pinion tip side: the tip corner on the rack flank. Where the touching
+  // point would lie in the rack's root round the flank line is taken as
+  // extended (the gap stays continuous and growing; docs/models/dynamics.md,
+  // limits).
+  if (s >= path.s_end) {
+    const double R_c = g.pinion.tip_radius;
     if (!(std::abs(s) < R_c)) return std::nullopt;
-    // Where it touches: on the flank line b = s at radius R_c.
-    const double depth = depth_of(std::sqrt(R_c * R_c - s * s), s, ca, sa);
-    if (depth < depth_tip - tol || depth > depth_root + tol) return std::nullopt;
     return std::max(0.0, pinion_corner_gap(r_b, R_c, s));
-  };
-  if (s >= path.s_end) return pinion_corner(g.pinion.tip_radius);
-  if (path.start_limited_by == "rack_tip") {
-    // The rack tip corner of the flank at s: on the line b = s at the rack tip
-    // depth, which at s = s_A is the LOA point (r_b, s_A).
-    const double a_k = r_b + (path.s_rack_tip - s) * sa / ca;
-    const double R_k = std::hypot(a_k, s);
-    if (R_k < g.pinion.form_radius - tol || R_k > g.pinion.tip_radius + tol) return std::nullopt;
+  }
+  // Root side: the rack tip corner K against the pinion involute, and, on an
+  // undercut pinion, its form corner against the rack flank; the gap is the
+  // smaller of the two that can touch. Where one stops touching (K reaches
+  // the form corner; the form corner reaches the rack tip) the two meet:
+  // corner on corner, the same gap.
+  const bool start_at_rack_tip = path.start_limited_by == "rack_tip";
+  const bool form_corner = g.pinion.undercut && path.start_limited_by == "form_circle";
+  // A start behind the base circle (interference ignored on purpose) is no
+  // physical contact: no corner there either.
+  if ((!start_at_rack_tip && !form_corner) || path.s_start < 0) return std::nullopt;
+  std::optional<double> gap;
+  // The rack tip corner of the flank at s: on the line b = s at the rack tip
+  // depth, which at s = s_A is the LOA point (r_b, s_A).
+  const double a_k = r_b + (path.s_rack_tip - s) * sa / ca;
+  const double R_k = std::hypot(a_k, s);
+  // The involute runs from the form circle (at a start on the rack tip the
+  // form circle may lie up to 1e-4 p_b beyond it: build_mesh_geometry) to the tip.
+  const double r_low = start_at_rack_tip ? std::min(g.pinion.form_radius, std::hypot(r_b, path.s_start))
+                                         : g.pinion.form_radius;
+  if (R_k >= r_low - tol && R_k <= g.pinion.tip_radius + tol) {
     const double alpha_k = std::acos(std::clamp(r_b / R_k, -1.0, 1.0));
     const double psi_k = std::atan2(s, a_k);
     // On the pinion flank whose LOA point is s, psi + inv(alpha) = s / r_b;
     // K lies psi_k + inv(alpha_k) - s / r_b ahead of it (outside the tooth).
-    return std::max(0.0, r_b * (psi_k + involute(alpha_k)) - s);
+    gap = std::max(0.0, r_b * (psi_k + involute(alpha_k)) - s);
   }
-  if (path.start_limited_by == "form_circle" && g.pinion.undercut) return pinion_corner(g.pinion.form_radius);
-  return std::nullopt;
+  if (form_corner) {
+    const double R_c = g.pinion.form_radius;
+    if (std::abs(s) < R_c) {
+      // It touches the flank line at (sqrt(R_c^2 - s^2), s); the rack flank
+      // is there when that point lies below the rack tip (depth along
+      // cos(a0) n + sin(a0) d, perpendicular to the rack).
+      const double depth = std::sqrt(R_c * R_c - s * s) * ca + s * sa;
+      const double depth_tip = r_b * ca + path.s_rack_tip * sa;
+      if (depth >= depth_tip - tol) {
+        const double gc = std::max(0.0, pinion_corner_gap(r_b, R_c, s));
+        gap = gap ? std::min(*gap, gc) : gc;
+      }
+    }
+  }
+  return gap;
 }
 
 namespace {
@@ -152,7 +168,7 @@ struct Builder {
   // corner stops touching, within half a base pitch of the path end.
   double reach(double s_end_side, double direction, double limit) const {
     auto inside = [&](double s) {
-      const std::optional<double> gap = corner_gap(drive, g, s);
+      const std::optional<double> gap = corner_gap(g, s);
       return gap && *gap <= limit;
     };
     double lo = 0, hi = 0.5 * pb;  // distances from the path end
@@ -188,7 +204,7 @@ struct Builder {
       double s = s_of(j, X);
       s = side > 0 ? std::max(s, g.path.s_end) : std::min(s, g.path.s_start);
       if (mode == Corner::kAuto && (side > 0 ? s > s_tip_reach : s < s_root_reach)) return;
-      const std::optional<double> gap = corner_gap(drive, g, std::clamp(s, s_root_reach, s_tip_reach));
+      const std::optional<double> gap = corner_gap(g, std::clamp(s, s_root_reach, s_tip_reach));
       if (!gap) return;
       const PathEnd& e = end_of(j, side);
       if (!(e.stiffness > 0)) return;
@@ -212,6 +228,10 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
   }
   if (!(options.corner_reach > 0) || !std::isfinite(options.corner_reach)) {
     throw std::invalid_argument("mesh force law: corner_reach must be > 0");
+  }
+  if (drive.load.force != model.drive().load.force || drive.mounting.clearance != model.drive().mounting.clearance ||
+      drive.rack.span != model.drive().rack.span) {
+    throw std::invalid_argument("mesh force law: `drive` is not the stiffness model's drive");
   }
   const MeshGeometry& g = model.geometry();
   const StiffnessCurve curve = model.curve(CurveDetail::kFull, positions_per_period);
@@ -248,6 +268,9 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
   // (X, (side, rack tooth)) where a corner slot starts or stops inside the period.
   std::vector<std::pair<double, std::pair<int, int>>> limits;
   if (options.corner_contact && have_a0 && k_local_min > 0) {
+    std::vector<double> travels;
+    travels.reserve(curve.samples.size());
+    for (const MeshState& st : curve.samples) travels.push_back(st.travel);
     const double limit = options.corner_reach * F / k_local_min;
     b.s_tip_reach = b.reach(g.path.s_end, +1, limit);
     b.s_root_reach = b.reach(g.path.s_start, -1, limit);
@@ -260,7 +283,12 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
       const int j_lo = static_cast<int>(std::floor((s_lim - b.A0) / b.pb)) - 1;
       const int j_hi = static_cast<int>(std::ceil((s_lim + law.period * b.ca - b.A0) / b.pb)) + 1;
       for (int j = j_lo; j <= j_hi; ++j) {
-        const double X = b.travel_at(j, s_lim);
+        double X = b.travel_at(j, s_lim);
+        // Not onto a curve sample: a travel holds at most two samples (one
+        // jump). Moved 1e-9 p towards the side where the slot is off instead.
+        const double tol = 1e-9 * law.mesh_pitch;
+        const auto near = std::lower_bound(travels.begin(), travels.end(), X - tol);
+        if (near != travels.end() && *near <= X + tol) X = *near + (side > 0 ? -tol : tol);
         if (X > 0 && X < law.period) limits.push_back({X, {side, j}});
       }
     }

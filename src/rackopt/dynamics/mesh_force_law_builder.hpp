@@ -63,12 +63,16 @@ MeshForceLaw build_mesh_force_law(const Drive& drive, const MeshStiffnessModel& 
 //    and cos alpha_K = r_b / |K|.
 //  * s < s_start, start limited by the form circle of an undercut pinion: the
 //    form corner (radius r_form, where the undercut fillet cuts the involute)
-//    against the rack flank, the first formula with r_form.
-// nullopt where no corner can touch: s inside the path; a start on the base
-// circle or on the form circle of a pinion that is not undercut (the fillet
-// there stands out of the involute: interference, not a corner); the touching
-// point off the mating flank (beyond the rack tip or into the rack root round,
-// outside the involute of the pinion).
-std::optional<double> corner_gap(const Drive& drive, const MeshGeometry& geometry, double s);
+//    against the rack flank, the first formula with r_form, while it touches
+//    the flank below the rack tip, else the rack tip corner against the
+//    involute (the smaller gap where both touch).
+// Where the touching point leaves the straight rack flank (above its tip,
+// into its root round) the flank line is taken as extended, so the gap stays
+// continuous and growing. nullopt where no corner can touch: s inside the
+// path; a start on or behind the base circle (interference ignored), or on
+// the form circle of a pinion that is not undercut (the fillet there stands out of the involute: interference,
+// not a corner); |s| >= the corner's radius; the rack tip corner beyond the
+// pinion tip circle.
+std::optional<double> corner_gap(const MeshGeometry& geometry, double s);
 
 }  // namespace rackopt
