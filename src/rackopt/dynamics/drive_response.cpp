@@ -222,6 +222,10 @@ std::vector<SweepPoint> speed_sweep(const DriveTrain& train, const MeshForceLaw&
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return speeds[a] < speeds[b]; });
   std::vector<SweepPoint> out(speeds.size());
+  // Whether any speed of the rising sweep left the flanks' front contact
+  // (separation, back flank) or found no periodic state: only then can the
+  // falling sweep land on another branch.
+  bool left_front_contact = false;
   // One direction: each speed starts from the previous one's steady state
   // (same travel phase; rates scale with the speed).
   auto run = [&](bool up) {
@@ -245,12 +249,26 @@ std::vector<SweepPoint> speed_sweep(const DriveTrain& train, const MeshForceLaw&
       (up ? p.dte_pp_up : p.dte_pp_down) = r.dte_peak_to_peak;
       (up ? p.contact_loss_up : p.contact_loss_down) = r.contact_loss_fraction;
       (up ? p.status_up : p.status_down) = r.status;
+      if (up && (r.mesh_force_min <= 0 || r.contact_loss_fraction > 0 || r.status != ResponseStatus::kConverged))
+        left_front_contact = true;
       if (r.status == ResponseStatus::kUnbounded) prev.reset(); else prev = z;
       prev_v = v;
     }
   };
   run(true);
-  run(false);
+  if (left_front_contact) {
+    run(false);
+  } else {
+    // The flanks stayed in front contact at every speed: the drive is a
+    // linear periodic system plus the corner slots' mild hardening, whose
+    // periodic state the monodromy start fixes; falling speeds find the same.
+    for (SweepPoint& p : out) {
+      p.kv_down = p.kv_up;
+      p.dte_pp_down = p.dte_pp_up;
+      p.contact_loss_down = p.contact_loss_up;
+      p.status_down = p.status_up;
+    }
+  }
   return out;
 }
 

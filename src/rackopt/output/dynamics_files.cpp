@@ -191,6 +191,13 @@ void write_csv(const std::string& path, const std::function<void(std::ostringstr
   write_file_atomic(path, o.str());
 }
 
+// A panel with nothing to draw: its title and a note (gnuplot refuses a plot
+// whose points are all undefined, so a constant outside the range is drawn).
+std::string empty_panel(const std::string& note) {
+  return "set xrange [0:1]\nset yrange [0:1]\nunset logscale y\nset label 9 " + gnuplot_quote(note) +
+         " at 0.5, 0.5 center\nplot 2 notitle\nunset label 9\nset xrange [*:*]\nset yrange [*:*]\n";
+}
+
 std::string gnuplot_script(const DriveDynamics& d, const std::string& title, const std::string& png) {
   std::ostringstream o;
   o << std::setprecision(10);
@@ -219,7 +226,7 @@ std::string gnuplot_script(const DriveDynamics& d, const std::string& title, con
     o << "set arrow 1 from " << d.operating_speed << ", graph 0 to " << d.operating_speed
       << ", graph 1 nohead dt 2 lc rgb '#555555'\n";
   if (d.sweep.empty()) {
-    o << "set label 9 'no speed sweep (--sweep)' at graph 0.5, graph 0.5 center\nplot 1/0 notitle\nunset label 9\n";
+    o << empty_panel("no speed sweep (rackopt dynamics --sweep)");
   } else {
     o << "plot $sweep using 1:2 with linespoints pt 7 ps 0.5 title 'speed rising', "
          "$sweep using 1:3 with lines dt 2 title 'speed falling'\n";
@@ -233,7 +240,7 @@ std::string gnuplot_script(const DriveDynamics& d, const std::string& title, con
          "$response using 1:($3*1e6) axes x1y2 with lines title 'DTE', "
       << d.static_force / 1e3 << " with lines dt 2 lc rgb '#555555' title 'static force'\n";
   } else {
-    o << "plot 1/0 notitle\n";
+    o << empty_panel("no operating speed (load.speed or --speed)");
   }
   o << "unset y2label\nunset y2tics\nset ytics mirror\n";
   // Spectrum.
@@ -244,17 +251,25 @@ std::string gnuplot_script(const DriveDynamics& d, const std::string& title, con
     o << "set xrange [0:" << 4 * fm << "]\n";
     o << "plot $spectrum using 1:($2>0?$2:1/0) with impulses lw 2 title 'amplitude'\nset xrange [*:*]\n";
   } else {
-    o << "plot 1/0 notitle\n";
+    o << empty_panel("no operating speed (load.speed or --speed)");
   }
   o << "unset logscale y\n";
   // Campbell diagram.
   const double vmax = d.speeds.empty() ? std::max(d.operating_speed, 1e-3) * 1.25 : d.speeds.back();
   o << "set title 'Campbell diagram'\nset xlabel 'pitch-line speed [m/s]'\nset ylabel 'frequency [Hz]'\n"
        "set xrange [0:" << vmax << "]\nset key top left\n";
-  double fmax = 0;
-  for (const auto& along : d.natural_frequency_along_travel)
-    fmax = std::max(fmax, *std::max_element(along.begin(), along.end()));
-  o << "set yrange [0:" << 1.3 * fmax << "]\nset samples 200\n";
+  // The frequency axis shows the orders over the speed range and the modes
+  // they can meet there: a stiff drive-train mode far above every order
+  // would squeeze the crossings into the bottom of the panel.
+  double f1max = 0;
+  if (!d.natural_frequency_along_travel.empty())
+    f1max = *std::max_element(d.natural_frequency_along_travel[0].begin(), d.natural_frequency_along_travel[0].end());
+  double order_max = 0;
+  for (const ExcitationOrder& e : d.orders) {
+    if (e.name != "span") order_max = std::max(order_max, vmax / e.wavelength);
+  }
+  const double fmax = std::max(1.5 * f1max, 1.1 * order_max);
+  o << "set yrange [0:" << fmax << "]\nset samples 400\n";
   o << "plot ";
   for (std::size_t i = 0; i < d.orders.size(); ++i) {
     o << (i ? ", " : "") << "x/" << d.orders[i].wavelength << " with lines title " << gnuplot_quote(d.orders[i].name + " order");
@@ -262,8 +277,11 @@ std::string gnuplot_script(const DriveDynamics& d, const std::string& title, con
   for (std::size_t i = 0; i < d.natural_frequency_along_travel.size(); ++i) {
     const auto [lo, hi] = std::minmax_element(d.natural_frequency_along_travel[i].begin(),
                                               d.natural_frequency_along_travel[i].end());
-    o << ", " << d.natural_frequencies_hz[i] << " with lines lw 2 lc rgb 'black' title 'mode " << i + 1 << "'";
-    o << ", " << *lo << " with lines dt 3 lc rgb 'black' notitle, " << *hi << " with lines dt 3 lc rgb 'black' notitle";
+    if (*lo > fmax) continue;
+    o << ", " << d.natural_frequencies_hz[i] << " with lines lw 2 lc rgb 'black' title 'mode " << i + 1
+      << " (mean stiffness)'";
+    o << ", " << *lo << " with lines dt 3 lc rgb 'black' title 'mode " << i + 1 << " along the span', " << *hi
+      << " with lines dt 3 lc rgb 'black' notitle";
   }
   o << "\nset xrange [*:*]\nset yrange [*:*]\n";
   if (!d.stability.empty()) {
