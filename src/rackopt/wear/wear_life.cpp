@@ -119,6 +119,9 @@ struct Path {
   // Each point's band on the LOA (build_weights): centre and half-length,
   // half-length 0 where the point reads the pair at its own contact.
   std::array<std::vector<double>, 2> band_c, band_L;
+  // The largest |band_c - s| + band_L of each member: a point's band lies
+  // within this of its own point (transition_corrections' search).
+  std::array<double, 2> band_reach{};
   // Smallest ratio, over the pinion points, of the exact-window sliding to
   // the thin-band law |s - s_P|/s (1 = the thin band holds everywhere).
   double base_circle_window = 1.0;
@@ -739,6 +742,7 @@ struct WearModel::Impl {
         const PointBand band = point_band(p, mb, i, half_width[i]);
         p.band_c[mb][i] = band.c;
         p.band_L[mb][i] = band.band ? band.L : 0.0;
+        p.band_reach[mb] = std::max(p.band_reach[mb], std::abs(band.c - p.s[i]) + p.band_L[mb][i]);
         point_weights(p, band, idx, val);
         beg.push_back(static_cast<int>(idx.size()));
       }
@@ -923,11 +927,16 @@ struct WearModel::Impl {
             if (c < xa || c > xb) return 0.0;
             return c <= hat_c[1] ? (c - xa) / std::max(hat_c[1] - xa, 1e-300) : (xb - c) / std::max(xb - hat_c[1], 1e-300);
           };
-          for (int m = 0; m < 2; ++m)
-            for (int i = 0; i < p.N; ++i) {
+          for (int m = 0; m < 2; ++m) {
+            // Only the points whose band can reach the hat (band_reach).
+            const double reach = p.band_reach[m] + p.ds;
+            const int i0 = std::max(0, static_cast<int>(std::floor((xa - reach - p.s_start) / p.ds)));
+            const int i1 = std::min(p.N - 1, static_cast<int>(std::ceil((xb + reach - p.s_start) / p.ds)));
+            for (int i = i0; i <= i1; ++i) {
               const double w = hat_weight(p.band_c[m][i], p.band_L[m][i]);
               if (w != 0) q[m][i] = std::max(q[m][i] + w * d * p.slide[m][i], 0.0);
             }
+          }
           if (probe && probe->mb >= 0 && probe_q) {
             const double w = hat_weight(probe->band_c, probe->band_L);
             if (w != 0) *probe_q = std::max(*probe_q + w * d * probe->slide, 0.0);
