@@ -12,6 +12,11 @@
 //                                                  every shipped problem with a wear section and
 //                                                  a spread of lifting platforms (~20 s; --detail:
 //                                                  one row per drive and pressure angle)
+//   ./build/accuracy_table wear_order              the three end-of-life criteria with the profile
+//                                                  update (max depth, contact ratio, case depth)
+//                                                  against profile points and block fraction, with
+//                                                  Heun's and the frozen-rate block, against 3840
+//                                                  points and block 0.0025 (~1 min)
 //   ./build/accuracy_table wear_resolution         wear model resolution (positions per point,
 //                                                  compliance-table intervals) on the start
 //                                                  designs of the ship-lift and gantry studies
@@ -48,6 +53,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -662,6 +668,82 @@ void wear_points_tables(bool detail) {
   std::printf("\n");
 }
 
+// ------------------------------------------------------- wear_order --
+// The order of convergence of the wear life with the profile update, for each
+// end-of-life criterion: the life against wear.profile_points (block 0.0025)
+// and against wear.block_fraction (3840 points), Heun's block and the
+// frozen-rate block (WearOptions::heun_blocks), signed and relative to 3840
+// points and block 0.0025 of the same block rule; then the candidate
+// defaults with the time of one life (median, model built once).
+struct OrderCase {
+  const char* label;
+  std::string file;
+  std::vector<std::string> overrides;
+  std::optional<double> contact_ratio;
+};
+
+TimedLife order_life(const OrderCase& c, int points, double block_fraction, bool heun, bool timed = false) {
+  Drive d = rackopt::load_problem(c.file, c.overrides);
+  d.wear.profile_points = points;
+  d.wear.block_fraction = block_fraction;
+  const WearModel model(d, {.heun_blocks = heun});
+  if (timed) return time_life(model, WearSample{.contact_ratio = c.contact_ratio});
+  return {model.life({.contact_ratio = c.contact_ratio}, WearModel::Detail::kLifeOnly), 0.0};
+}
+
+void wear_order_tables() {
+  const std::string dir = std::string(RACKOPT_SOURCE_DIR) + "/problems/";
+  const std::string case_h =
+      "wear.hardness={kind: case_hardened, surface: 650 HV, core: 350 HV, case_depth: 0.15 mm, limit: 550 HV}";
+  const std::vector<OrderCase> cases = {
+      {"ship_lift, update on (max_depth)", dir + "ship_lift.yaml", {"wear.update_profile=on"}, std::nullopt},
+      {"ship_lift, ε 1.52, [ε] 1.49 (contact_ratio)", dir + "ship_lift.yaml",
+       {"wear.update_profile=on", "wear.min_contact_ratio=1.49"}, 1.52},
+      {"gantry_axis, case depth 0.15 mm (case_depth)", dir + "gantry_axis.yaml",
+       {case_h, "wear.stop_at_case_depth=on", "wear.max_depth=0.3 mm"}, std::nullopt}};
+  constexpr int kRefPoints = 3840;
+  constexpr double kRefBlock = 0.0025;
+  for (const OrderCase& c : cases) {
+    std::printf("%s:\n\n", c.label);
+    for (const bool heun : {true, false}) {
+      const TimedLife ref = order_life(c, kRefPoints, kRefBlock, heun);
+      std::printf("%s block; reference %d points, block %g: %.6g rack passes (%s)\n\n",
+                  heun ? "Heun's" : "Frozen-rate", kRefPoints, kRefBlock, ref.r.life_cycles, ref.r.criterion.c_str());
+      std::printf("| profile points (block %g) | life error | criterion | block fraction (%d points) | life error | criterion |\n",
+                  kRefBlock, kRefPoints);
+      std::printf("|---|---|---|---|---|---|\n");
+      const int pts[] = {60, 120, 240, 480, 960, 1920};
+      const double blk[] = {0.2, 0.1, 0.05, 0.02, 0.01, 0.005};
+      for (int k = 0; k < 6; ++k) {
+        const TimedLife a = order_life(c, pts[k], kRefBlock, heun);
+        const TimedLife b = order_life(c, kRefPoints, blk[k], heun);
+        std::printf("| %d | %+.1e | %s | %g | %+.1e | %s |\n", pts[k], signed_rel(a.r.life_cycles, ref.r.life_cycles),
+                    a.r.criterion.c_str(), blk[k], signed_rel(b.r.life_cycles, ref.r.life_cycles), b.r.criterion.c_str());
+      }
+      std::printf("\n");
+    }
+  }
+  std::printf("Settings (error against 3840 points and block 0.0025 with Heun's block; ms: one life):\n\n");
+  std::printf("| points | block fraction | block |");
+  for (const OrderCase& c : cases) std::printf(" %s: life error | ms |", c.label);
+  std::printf("\n|---|---|---|");
+  for (std::size_t k = 0; k < cases.size(); ++k) std::printf("---|---|");
+  std::printf("\n");
+  std::vector<double> ref;
+  for (const OrderCase& c : cases) ref.push_back(order_life(c, kRefPoints, kRefBlock, true).r.life_cycles);
+  const std::vector<std::tuple<int, double, bool>> settings = {
+      {240, 0.02, false}, {120, 0.05, true}, {240, 0.02, true}, {240, 0.05, true}, {240, 0.1, true}, {480, 0.05, true}};
+  for (const auto& [n, f, heun] : settings) {
+    std::printf("| %d | %g | %s |", n, f, heun ? "Heun" : "frozen rates");
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      const TimedLife t = order_life(cases[k], n, f, heun, true);
+      std::printf(" %+.1e | %.2f |", signed_rel(t.r.life_cycles, ref[k]), t.ms);
+    }
+    std::printf("\n");
+  }
+  std::printf("\n");
+}
+
 void wear_resolution_tables() {
   // The reference: every knob at its finest default of before (2 positions
   // per point whatever the points, 512 table intervals).
@@ -986,6 +1068,15 @@ int main(int argc, char** argv) {
   if (!args.empty() && args[0] == "wear_resolution") {
     try {
       wear_resolution_tables();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_table: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
+  if (!args.empty() && args[0] == "wear_order") {
+    try {
+      wear_order_tables();
     } catch (const std::exception& e) {
       std::fprintf(stderr, "accuracy_table: %s\n", e.what());
       return 1;

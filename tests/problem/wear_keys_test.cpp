@@ -130,7 +130,7 @@ TEST(WearKeys, DefaultsOfAConfiguredWear) {
   EXPECT_FALSE(w.stop_at_case_depth);
   EXPECT_TRUE(w.update_profile);
   EXPECT_EQ(w.profile_points, 240);  // converged to 0.5 % (docs/accuracy.md, "Profile points")
-  EXPECT_DOUBLE_EQ(w.block_fraction, 0.02);
+  EXPECT_DOUBLE_EQ(w.block_fraction, 0.05);
   // A single hardness is a constant profile for both members; core = surface.
   for (const HardnessProfile* h : {&w.pinion_hardness, &w.rack_hardness}) {
     EXPECT_EQ(h->kind, HardnessProfile::Kind::kConstant);

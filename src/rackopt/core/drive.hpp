@@ -231,7 +231,8 @@ struct WearSpec {
   bool stop_at_case_depth = false;   // failure when wear reaches a case-hardened profile's case_depth
   bool update_profile = true;        // re-solve load sharing and contact ratio on the worn profiles
   int profile_points = 240;          // points along each member's active profile (docs/models/wear.md: why 240)
-  double block_fraction = 0.02;      // adaptive block: at most this fraction of h_max worn per block
+  double block_fraction = 0.05;      // adaptive block: at most this fraction of h_max worn per block (Heun's
+                                     // second-order step; docs/models/wear.md: why 0.05)
 };
 
 // How often the drive runs. A rack flank point meets a pinion once per

@@ -116,6 +116,12 @@ struct Path {
   std::array<std::vector<int>, 2> w_begin, w_idx;
   std::array<std::vector<double>, 2> w_val;
   std::array<std::vector<double>, 2> slide;  // |s - s_P| / v_i per point (pinion: exact band window, below)
+  // Each point's band on the LOA (build_weights): centre and half-length,
+  // half-length 0 where the point reads the pair at its own contact.
+  std::array<std::vector<double>, 2> band_c, band_L;
+  // The largest |band_c - s| + band_L of each member: a point's band lies
+  // within this of its own point (transition_corrections' search).
+  std::array<double, 2> band_reach{};
   // Smallest ratio, over the pinion points, of the exact-window sliding to
   // the thin-band law |s - s_P|/s (1 = the thin band holds everywhere).
   double base_circle_window = 1.0;
@@ -633,6 +639,7 @@ struct WearModel::Impl {
   struct Probe {
     int mb = -1;
     double c = 0, slide = 0;
+    double band_c = 0, band_L = 0;  // as Path::band_c, band_L
     std::vector<int> idx;
     std::vector<double> val;
     double g = 0, h = 0, g_prev = 0, rate = 0;  // as the profile points' g, h, g_prev and rate
@@ -662,6 +669,8 @@ struct WearModel::Impl {
         }
       }
     }
+    pr.band_c = band.c;
+    pr.band_L = band.band ? band.L : 0.0;
     point_weights(p, band, pr.idx, pr.val);
   }
   static double probe_pass_load(const Probe& pr, const std::vector<double>& margin) {
@@ -727,8 +736,14 @@ struct WearModel::Impl {
       const std::size_t expect = (opt.hertz_band ? 64 : 2) * static_cast<std::size_t>(p.N);
       idx.reserve(expect);
       val.reserve(expect);
+      p.band_c[mb].resize(p.N);
+      p.band_L[mb].resize(p.N);
       for (int i = 0; i < p.N; ++i) {
-        point_weights(p, point_band(p, mb, i, half_width[i]), idx, val);
+        const PointBand band = point_band(p, mb, i, half_width[i]);
+        p.band_c[mb][i] = band.c;
+        p.band_L[mb][i] = band.band ? band.L : 0.0;
+        p.band_reach[mb] = std::max(p.band_reach[mb], std::abs(band.c - p.s[i]) + p.band_L[mb][i]);
+        point_weights(p, band, idx, val);
         beg.push_back(static_cast<int>(idx.size()));
       }
     }
@@ -781,13 +796,45 @@ struct WearModel::Impl {
         if (ma >= 0 && mb >= 0) {
           loaded += L;
         } else if (ma >= 0) {
-          loaded += L * ma / (ma - mb);
+          loaded += L * margin_zero(p, iv, k, margin);
         } else if (mb >= 0) {
-          loaded += L * mb / (mb - ma);
+          loaded += L * (1 - margin_zero(p, iv, k, margin));
         }
       }
     }
     return loaded / pb;
+  }
+
+  // Where a pair's signed margin crosses zero between nodes k and k + 1 of
+  // its interval (the signs differ), as a fraction of that segment. The
+  // margin is continuous there but has a kink at its zero: the loaded and the
+  // open pair see different active sets, so the common approach changes its
+  // slope. A straight line across the kink puts the zero off by a fraction of
+  // the segment that depends on where the kink falls, an error of first
+  // order in the node spacing. Each side is smooth up to the kink, so the line
+  // through the two nodes of one side, extended to zero, is second order.
+  // The two sides' zeros are blended with the weights (1 - t, t), t the
+  // straight line's zero: near a node the side of that node decides, and its
+  // zero goes to the node as the node's margin goes to zero, so the zero
+  // moves continuously from one segment to the next (the contact-ratio
+  // criterion's root finding needs that). A side without a second node in
+  // its zone uses the straight line.
+  static double margin_zero(const Path& p, const std::vector<int>& iv, std::size_t k,
+                            const std::vector<double>& margin) {
+    const double xa = p.node_c[iv[k]], xb = p.node_c[iv[k + 1]], L = xb - xa;
+    const double ma = margin[iv[k]], mb = margin[iv[k + 1]];
+    const double across = ma / (ma - mb);
+    if (!(L > 0)) return across;
+    double left = across, right = across;
+    if (k >= 1) {
+      const double x = p.node_c[iv[k - 1]], m = margin[iv[k - 1]];
+      if ((m >= 0) == (ma >= 0) && m != ma && xa > x) left = std::clamp(-ma * (xa - x) / (ma - m) / L, 0.0, 1.0);
+    }
+    if (k + 2 < iv.size()) {
+      const double x = p.node_c[iv[k + 2]], m = margin[iv[k + 2]];
+      if ((m >= 0) == (mb >= 0) && m != mb && x > xb) right = std::clamp(1.0 - mb * (x - xb) / (m - mb) / L, 0.0, 1.0);
+    }
+    return (1 - across) * left + across * right;
   }
 
   // <w>_i * sliding ratio for each member and point.
@@ -805,6 +852,108 @@ struct WearModel::Impl {
         q[mb][i] = w * p.slide[mb][i];
       }
     }
+  }
+
+  // The pair transitions of the worn flanks, added to the pass loads q (and
+  // to the probe's, `probe_q`). On the worn flanks a pair opens or closes
+  // between two mesh positions (margin_zero), and every pair of those
+  // positions has a kink there: the opening pair's load reaches zero, the
+  // others take it over. The straight lines between the load samples cut
+  // that corner, and the area they miss, about the load's change times the
+  // spacing, lands in the pass loads of the points whose band covers it:
+  // an error of first order in the spacing, which the wear then carries
+  // into the worn profile and the contact ratio. Each pair's load at the
+  // transition is taken from both sides (the line through the two samples of
+  // a side, extended; the opening pair: 0), and the difference from the
+  // straight line, a hat over the segment with its peak at the transition,
+  // is integrated over each point's band exactly like the samples
+  // (band_weights on the three nodes of the hat).
+  void transition_corrections(const Path& p, const std::vector<double>& margin, std::array<std::vector<double>, 2>& q,
+                              const Probe* probe, double* probe_q) const {
+    const int npos = static_cast<int>(p.pos_begin.size()) - 1;
+    auto pairs_at = [&](int k) { return p.pos_begin[k + 1] - p.pos_begin[k]; };
+    auto load = [&](int node) { return std::max(margin[node], 0.0); };
+    // The same piece: as many pairs, and the reference pair moved on.
+    auto same_piece = [&](int k0, int k1) {
+      return k0 >= 0 && k1 < npos && pairs_at(k0) == pairs_at(k1) && p.node_c[p.pos_begin[k0]] < p.node_c[p.pos_begin[k1]];
+    };
+    thread_local std::vector<int> idx;
+    thread_local std::vector<double> val;
+    const LoadIntervals hat_iv{{0, 1, 2}};
+    std::vector<double> hat_c(3);
+    for (const auto& iv : p.intervals) {
+      for (std::size_t k = 0; k + 1 < iv.size(); ++k) {
+        const double ma = margin[iv[k]], mb_ = margin[iv[k + 1]];
+        if ((ma >= 0) == (mb_ >= 0)) continue;
+        const double t = margin_zero(p, iv, k, margin);
+        const int P = static_cast<int>(std::upper_bound(p.pos_begin.begin(), p.pos_begin.end(), iv[k]) - p.pos_begin.begin()) - 1;
+        const int j = iv[k] - p.pos_begin[P];
+        if (!same_piece(P, P + 1)) continue;
+        for (int jj = 0; jj < pairs_at(P); ++jj) {
+          const int na = p.pos_begin[P] + jj, nb = p.pos_begin[P + 1] + jj;
+          const double xa = p.node_c[na], xb = p.node_c[nb];
+          if (!(xb > xa)) continue;
+          const double lin = load(na) + t * (load(nb) - load(na));
+          // Blended as margin_zero's sides (the straight line where a side
+          // has no second sample), so the correction vanishes as the
+          // transition reaches a sample.
+          double exact = 0;
+          if (jj != j) {
+            double left = lin, right = lin;
+            if (same_piece(P - 1, P)) {
+              const int nl = p.pos_begin[P - 1] + jj;
+              left = load(na) + (load(na) - load(nl)) * t * (xb - xa) / (xa - p.node_c[nl]);
+            }
+            if (same_piece(P + 1, P + 2)) {
+              const int nr = p.pos_begin[P + 2] + jj;
+              right = load(nb) + (load(nb) - load(nr)) * (1 - t) * (xb - xa) / (p.node_c[nr] - xb);
+            }
+            exact = std::max((1 - t) * left + t * right, 0.0);
+          }
+          const double d = exact - lin;
+          if (d == 0) continue;
+          hat_c = {xa, xa + t * (xb - xa), xb};
+          auto hat_weight = [&](double c, double L) {
+            if (L > 0) {
+              if (c + L <= xa || c - L >= xb) return 0.0;
+              idx.clear();
+              val.clear();
+              band_weights(hat_c, hat_iv, c, L, idx, val);
+              double w = 0;
+              for (std::size_t m = 0; m < idx.size(); ++m)
+                if (idx[m] == 1) w += val[m];
+              return w;
+            }
+            if (c < xa || c > xb) return 0.0;
+            return c <= hat_c[1] ? (c - xa) / std::max(hat_c[1] - xa, 1e-300) : (xb - c) / std::max(xb - hat_c[1], 1e-300);
+          };
+          for (int m = 0; m < 2; ++m) {
+            // Only the points whose band can reach the hat (band_reach).
+            const double reach = p.band_reach[m] + p.ds;
+            const int i0 = std::max(0, static_cast<int>(std::floor((xa - reach - p.s_start) / p.ds)));
+            const int i1 = std::min(p.N - 1, static_cast<int>(std::ceil((xb + reach - p.s_start) / p.ds)));
+            for (int i = i0; i <= i1; ++i) {
+              const double w = hat_weight(p.band_c[m][i], p.band_L[m][i]);
+              if (w != 0) q[m][i] = std::max(q[m][i] + w * d * p.slide[m][i], 0.0);
+            }
+          }
+          if (probe && probe->mb >= 0 && probe_q) {
+            const double w = hat_weight(probe->band_c, probe->band_L);
+            if (w != 0) *probe_q = std::max(*probe_q + w * d * probe->slide, 0.0);
+          }
+        }
+      }
+    }
+  }
+
+  // The probe's share of transition_corrections (the points' are added
+  // where the pass loads are computed).
+  void transition_corrections_probe(const Path& p, const std::vector<double>& margin, const Probe& probe,
+                                    double& probe_q) const {
+    thread_local std::array<std::vector<double>, 2> none;
+    none[0].assign(p.N, 0.0);
+    none[1].assign(p.N, 0.0);
+    transition_corrections(p, margin, none, &probe, &probe_q);
   }
 
   WearProfile profile(const Path& p, int mb, const std::vector<double>& depth) const {
@@ -1089,10 +1238,14 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
   // unworn pass load next to the point that fails first, then worn like a
   // profile point (it does not enter the load sharing: one point).
   Probe probe;
+  const bool heun = opt.heun_blocks;
+  std::array<std::vector<double>, 2> h_pred;  // Heun's predicted depths
+  std::vector<double> margin_pred;
   const long max_blocks = static_cast<long>(2.0 * N / f_blk) + 10;
   for (long blk = 0;; ++blk) {
     if (blk > max_blocks) throw std::runtime_error("wear: block limit exceeded (internal error)");
     if (!bounded) pass_loads(p, margin, q);
+    if (update && opt.transition_corrections) transition_corrections(p, margin, q, nullptr, nullptr);
     // dG/dn per rack pass (G in unscaled hardness units: the sample's G is sig G).
     double n_fail = kInf, n_blk = kInf;
     int fm = -1, fi = -1;
@@ -1120,7 +1273,50 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
       }
     }
     if (blk == 0) place_probe(p, margin, fm, fi, probe);
-    probe.rate = Kk * probe_pass_load(probe, margin) * rho[probe.mb] / sig;
+    {
+      double pq = probe_pass_load(probe, margin);
+      if (update && opt.transition_corrections) transition_corrections_probe(p, margin, probe, pq);
+      probe.rate = Kk * pq * rho[probe.mb] / sig;
+    }
+    if (update && heun) {
+      // Heun's predictor-corrector (the trapezoidal rule in the passes): wear
+      // the block's length with the rates of its start, re-solve the load
+      // sharing there and wear with the mean of the two rates. With the
+      // rates of the start alone the depths lag the unloading of the worn
+      // flanks by half a block, an error of first order in block_fraction
+      // that the contact-ratio criterion turns into several per cent of the
+      // life (docs/models/wear.md, "Progression and failure").
+      double n_pred = std::min(n_blk, n_fail);
+      if (probe.rate > 0) {
+        const int mb = probe.mb;
+        n_pred = std::min({n_pred, (G[mb].total() - probe.g) / probe.rate,
+                           (G[mb].G(std::min(probe.h + f_blk * hmax, limit[mb])) - probe.g) / probe.rate});
+      }
+      for (int mb = 0; mb < 2; ++mb) {
+        h_pred[mb].resize(N);
+        for (int i = 0; i < N; ++i) h_pred[mb][i] = G[mb].inverse_near(g[mb][i] + rate[mb][i] * n_pred, h[mb][i]);
+      }
+      solve(p, h_pred[kPinion], h_pred[kRack], F, margin_pred);
+      ++solves;
+      pass_loads(p, margin_pred, q);
+      double pq = probe_pass_load(probe, margin_pred);
+      if (opt.transition_corrections) transition_corrections(p, margin_pred, q, &probe, &pq);
+      n_fail = kInf;
+      for (int mb = 0; mb < 2; ++mb)
+        for (int i = 0; i < N; ++i) {
+          const double rt = 0.5 * (rate[mb][i] + Kk * q[mb][i] * rho[mb] / sig);
+          rate[mb][i] = rt;
+          if (!(rt > 0)) continue;
+          const double nf = (G[mb].total() - g[mb][i]) / rt;
+          if (nf < n_fail) {
+            n_fail = nf;
+            fm = mb;
+            fi = i;
+          }
+        }
+      probe.rate = 0.5 * (probe.rate + Kk * pq * rho[probe.mb] / sig);
+      n_blk = n_pred;
+    }
     const bool near_probe = fm == probe.mb && std::abs(p.s[fi] - probe.c) <= p.ds * (1 + 1e-9);
     // The deepest wear lies between profile points in general: take the
     // vertex of the parabola through the passes-to-failure of the first
@@ -1146,7 +1342,7 @@ WearLifeResult WearModel::Impl::life(const WearSample& smp, Detail detail) const
         n_fail = nf;
         probe_fails = true;
       }
-      if (update) n_blk = std::min(n_blk, (G[mb].G(std::min(probe.h + f_blk * hmax, limit[mb])) - probe.g) / probe.rate);
+      if (update && !heun) n_blk = std::min(n_blk, (G[mb].G(std::min(probe.h + f_blk * hmax, limit[mb])) - probe.g) / probe.rate);
     }
     res.blocks = static_cast<int>(blk + 1);
     if (n_fail <= n_blk) {

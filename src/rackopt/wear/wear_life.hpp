@@ -139,6 +139,19 @@ struct WearOptions {
   // limiting member and reason are the same bits as with every point's
   // weights (false: every point's, the reference the tests compare with).
   bool bounded_life_search = true;
+  // With the profile update: integrate each block with Heun's
+  // predictor-corrector (the mean of the rates at the block's start and at
+  // its predicted end: second order in block_fraction, two load-sharing
+  // solves a block) or with the rates of its start alone (false: first
+  // order, one solve a block; the reference the convergence tests compare
+  // with).
+  bool heun_blocks = true;
+  // With the profile update: add to the pass loads the corner the straight
+  // lines between load samples cut where a pair opens or closes between two
+  // mesh positions (true; docs/models/wear.md, "Load seen by a point"), or
+  // not (false: first order in the spacing; the reference the convergence
+  // tests compare with).
+  bool transition_corrections = true;
 };
 
 class WearModel {
