@@ -33,7 +33,7 @@ TEST(PlotScripts, TitlesWithAnApostropheStayOneString) {
   // The scripts may add to the title: the quoted name without its closing quote.
   const std::string quoted = gnuplot_quote(name);
   const std::string opening = quoted.substr(0, quoted.size() - 1);
-  for (const std::string& script : {wear_profile_gnuplot(name), life_histogram_gnuplot(name),
+  for (const std::string& script : {wear_profile_gnuplot(name, WearLifeResult{}), life_histogram_gnuplot(name),
                                     reliability_gnuplot(name), stiffness_gnuplot(StiffnessCurve{}, name, "s.csv", "s.png")}) {
     EXPECT_NE(script.find(opening), std::string::npos) << script.substr(0, 400);
     EXPECT_EQ(script.find("paper's"), std::string::npos) << "the raw name, unescaped";
@@ -183,7 +183,7 @@ TEST(PlotScripts, NoTitleRunsACommandInAnyScript) {
   const std::string dir = test_support::scratch_dir("hostile_titles");
   const std::string title = "drive\nsystem('touch owned_nl')\rsystem('touch owned_cr')\n`touch owned_bq` @m it's";
   const std::vector<std::pair<std::string, std::string>> scripts = {
-      {"wear_profile.gp", wear_profile_gnuplot(title)},
+      {"wear_profile.gp", wear_profile_gnuplot(title, WearLifeResult{})},
       {"life_histogram.gp", life_histogram_gnuplot(title)},
       {"reliability.gp", reliability_gnuplot(title)},
       {"stiffness.gp", stiffness_gnuplot(StiffnessCurve{}, title, "s\nsystem('touch owned_csv').csv", "s.png.tmp")}};

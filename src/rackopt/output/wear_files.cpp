@@ -34,7 +34,7 @@ WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r
     if (!images.svg.empty()) files.written.push_back(images.svg);
   };
   table("wear_profile_csv", "wear_profile.csv", wear_profile_csv(r.nominal));
-  plot("wear_profile_png", "wear_profile.gp", wear_profile_gnuplot(title), "wear_profile.png");
+  plot("wear_profile_png", "wear_profile.gp", wear_profile_gnuplot(title, r.nominal), "wear_profile.png");
   // Without random inputs there are no sampled lives, only the nominal profile.
   if (!r.lives.empty()) {
     table("life_samples_csv", "life_samples.csv", life_samples_csv(r));
