@@ -10,6 +10,7 @@
 #include "cli.hpp"
 #include "rackopt/wear_reliability/wear_reliability.hpp"
 #include "rackopt/output/folder_lock.hpp"
+#include "rackopt/output/plot_batch.hpp"
 #include "rackopt/core/interrupt.hpp"
 #include "rackopt/core/progress_bar.hpp"
 #include "rackopt/output/wear_files.hpp"
@@ -46,7 +47,10 @@ int cmd_wear(const Args& a) {
   throw_if_stop_requested("wear");
 
   const std::string title = drive.name.empty() ? fs::path(a.file).stem().string() : drive.name;
-  const WrittenFiles written = write_wear_files(drive, r, dir.string(), title);
+  // The three plots from one gnuplot process (PlotBatch).
+  PlotBatch batch(dir.string());
+  WrittenFiles written = write_wear_files(drive, r, dir.string(), title, PlotImages::kPng, &batch);
+  written.drop(batch.render(written.warnings));
   const WearFiles files = wear_files_by_role(written.listed);
   const std::vector<std::string>& warnings = written.warnings;
   throw_if_stop_requested("wear");  // the CSVs are complete; the plots were not drawn

@@ -108,7 +108,7 @@ std::map<std::string, std::string> scripts_of(const WriterTexts& t) {
   const StudySpec sweep = spec_of(t, StudyKind::kSweep);
   if (const auto table = sweep_table(sweep, labels, r)) out["sweep.gp"] = sweep_gnuplot(sweep, *table, labels);
   out["stiffness.gp"] = stiffness_gnuplot(StiffnessCurve{}, t.name, "stiffness.csv", "stiffness.png.tmp");
-  out["wear_profile.gp"] = wear_profile_gnuplot(t.name);
+  out["wear_profile.gp"] = wear_profile_gnuplot(t.name, WearLifeResult{});
   out["life_histogram.gp"] = life_histogram_gnuplot(t.name);
   out["reliability.gp"] = reliability_gnuplot(t.name);
   return out;

@@ -51,6 +51,11 @@ std::string gnuplot_quote(const std::string& text) {
   return out + "'";
 }
 
+std::string gnuplot_program() {
+  const char* env = std::getenv("RACKOPT_GNUPLOT");
+  return env != nullptr && *env != '\0' ? env : "gnuplot";
+}
+
 double plot_time_limit_seconds() {
   const char* env = std::getenv("RACKOPT_PLOT_TIMEOUT");
   if (env != nullptr && *env != '\0') {
@@ -79,8 +84,7 @@ void render(const std::string& dir_name, const std::string& script, std::vector<
   const auto warn_all = [&](const std::string& why) {
     for (const Image& image : images) warnings.push_back("plot " + (dir / image.name).string() + " not drawn: " + why);
   };
-  const char* env = std::getenv("RACKOPT_GNUPLOT");
-  const std::string program = env != nullptr && *env != '\0' ? env : "gnuplot";
+  const std::string program = gnuplot_program();
   const std::string exe = find_program(program);
   if (exe.empty()) {
     warnings.push_back(program + " not found: wrote " + (dir / script).string() + " but no plot (install gnuplot-nox)");

@@ -56,6 +56,10 @@ RenderedImages render_plot_images(const std::string& dir, const std::string& scr
 // apart, and the script stays runnable by hand (`gnuplot x.gp`).
 std::string gnuplot_terminal(const std::string& png_tmp, int width, int height, int font_size = 11);
 
+// The gnuplot program to run: the environment variable RACKOPT_GNUPLOT when
+// set and not empty, else "gnuplot" (found on PATH by find_program).
+std::string gnuplot_program();
+
 // Seconds one gnuplot run may take: RACKOPT_PLOT_TIMEOUT (a positive number)
 // when set, else 60.
 double plot_time_limit_seconds();

@@ -3,13 +3,12 @@
 #include <filesystem>
 
 #include "rackopt/output/atomic_file.hpp"
-#include "rackopt/output/plot.hpp"
 #include "rackopt/output/stiffness_report.hpp"
 
 namespace rackopt {
 
 WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::string& out_dir, const std::string& title,
-                                   PlotImages plots) {
+                                   PlotImages plots, PlotBatch* batch) {
   namespace fs = std::filesystem;
   const fs::path dir(out_dir.empty() ? std::string(".") : out_dir);
   WrittenFiles files;
@@ -23,9 +22,8 @@ WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::strin
   const std::string script = (dir / "stiffness.gp").string();
   write_file_atomic(script, stiffness_gnuplot(curve, title, "stiffness.csv", "stiffness.png.tmp"));
   files.written.push_back(script);
-  const RenderedImages images = render_plot_images(dir.string(), "stiffness.gp", "stiffness.png",
-                                                   plots == PlotImages::kPngAndSvg ? "stiffness.svg" : "",
-                                                   files.warnings);
+  const RenderedImages images = draw_or_queue(batch, dir.string(), "stiffness.gp", "stiffness.png",
+                                              plots == PlotImages::kPngAndSvg ? "stiffness.svg" : "", files.warnings);
   if (!images.png.empty()) {
     files.written.push_back(images.png);
     files.listed.emplace_back("stiffness_png", images.png);

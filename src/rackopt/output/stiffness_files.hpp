@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "rackopt/output/plot.hpp"
+#include "rackopt/output/plot_batch.hpp"
 #include "rackopt/output/written_files.hpp"
 #include "rackopt/stiffness/mesh_stiffness.hpp"
 
@@ -16,8 +16,10 @@ namespace rackopt {
 // stiffness.gp and the image stiffness.png (role "stiffness_png", listed only
 // when gnuplot drew it; with kPngAndSvg also stiffness.svg, in `written`) with `title` on top. Every file atomically
 // (write_file_atomic, render_plot). A plot gnuplot cannot draw is a warning
-// in the result; throws only when a file cannot be written.
+// in the result; throws only when a file cannot be written. With `batch`
+// (for `out_dir`) the plot is queued there and listed as drawn
+// (draw_or_queue): the caller drops what batch->render() did not draw.
 WrittenFiles write_stiffness_files(const StiffnessCurve& curve, const std::string& out_dir, const std::string& title,
-                                   PlotImages plots = PlotImages::kPng);
+                                   PlotImages plots = PlotImages::kPng, PlotBatch* batch = nullptr);
 
 }  // namespace rackopt

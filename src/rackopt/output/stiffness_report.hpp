@@ -53,15 +53,18 @@ std::string stiffness_json(const Drive& drive, const MeshGeometry& geometry, con
                            const MeshRipple& ripple, const TransmissionError& te, const Timings& timings,
                            const std::string& csv_path, const std::string& plot_path);
 
-// The columns of the stiffness plot, one row per sample, space-separated,
-// with the CSV's digits (%.9g): travel, stiffness, rigid-body stiffness,
-// transmission error, then per pair slot q (0..max_pairs-1) "in mesh" (1 or
-// 0) and its load share (0 when not in mesh). Every sample is kept.
+// The columns of the stiffness plot in the units it draws, one row per
+// sample, space-separated: travel [m] (the CSV's digits, %.9g), stiffness
+// and rigid-body stiffness [MN/m], transmission error [um] (each the CSV's
+// digits parsed and scaled by 1e6, written to parse back to that double),
+// then per pair slot q (0..max_pairs-1) its load share (the CSV's digits), or
+// NaN when the slot is not in mesh. Every sample is kept.
 std::string stiffness_plot_data(const StiffnessCurve& curve);
 
 // gnuplot script that draws the stiffness plot into `png_name` from
-// stiffness_plot_data, inline as a datablock (gnuplot parses 4 + 2 * max_pairs
-// columns instead of the CSV's 60, once per image); `csv_name` is named in
+// stiffness_plot_data, inline as a datablock (gnuplot parses 4 + max_pairs
+// columns instead of the CSV's 60, once per image, and evaluates no
+// expression per point); `csv_name` is named in
 // its first line as the table the data comes from.
 std::string stiffness_gnuplot(const StiffnessCurve& curve, const std::string& title, const std::string& csv_name,
                               const std::string& png_name);

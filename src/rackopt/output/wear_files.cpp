@@ -3,12 +3,12 @@
 #include <filesystem>
 
 #include "rackopt/output/atomic_file.hpp"
-#include "rackopt/output/plot.hpp"
+#include "rackopt/output/plot_batch.hpp"
 
 namespace rackopt {
 
 WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r, const std::string& out_dir,
-                              const std::string& title, PlotImages plots) {
+                              const std::string& title, PlotImages plots, PlotBatch* batch) {
   namespace fs = std::filesystem;
   const fs::path dir(out_dir.empty() ? std::string(".") : out_dir);
   WrittenFiles files;
@@ -26,7 +26,7 @@ WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r
     files.written.push_back(script_path);
     const std::string svg_name =
         plots == PlotImages::kPngAndSvg ? fs::path(png_name).replace_extension(".svg").string() : std::string();
-    const RenderedImages images = render_plot_images(dir.string(), script_name, png_name, svg_name, files.warnings);
+    const RenderedImages images = draw_or_queue(batch, dir.string(), script_name, png_name, svg_name, files.warnings);
     if (!images.png.empty()) {
       files.written.push_back(images.png);
       files.listed.emplace_back(role, images.png);
@@ -34,7 +34,7 @@ WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r
     if (!images.svg.empty()) files.written.push_back(images.svg);
   };
   table("wear_profile_csv", "wear_profile.csv", wear_profile_csv(r.nominal));
-  plot("wear_profile_png", "wear_profile.gp", wear_profile_gnuplot(title), "wear_profile.png");
+  plot("wear_profile_png", "wear_profile.gp", wear_profile_gnuplot(title, r.nominal), "wear_profile.png");
   // Without random inputs there are no sampled lives, only the nominal profile.
   if (!r.lives.empty()) {
     table("life_samples_csv", "life_samples.csv", life_samples_csv(r));

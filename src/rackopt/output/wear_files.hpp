@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "rackopt/wear_reliability/wear_reliability.hpp"
-#include "rackopt/output/plot.hpp"
+#include "rackopt/output/plot_batch.hpp"
 #include "rackopt/output/wear_report.hpp"
 #include "rackopt/output/written_files.hpp"
 
@@ -24,9 +24,12 @@ namespace rackopt {
 // scripts) unless `plots` is kNone, each listed only when gnuplot drew it;
 // with kPngAndSvg each plot's SVG too (in `written`, not listed). `title`
 // heads every plot. Every file atomically; a plot gnuplot cannot draw is a
-// warning in the result; throws only when a file cannot be written.
+// warning in the result; throws only when a file cannot be written. With
+// `batch` (for `out_dir`) the plots are queued there and listed as drawn
+// (draw_or_queue): the caller drops what batch->render() did not draw.
 WrittenFiles write_wear_files(const Drive& drive, const WearReliabilityResult& r, const std::string& out_dir,
-                              const std::string& title, PlotImages plots = PlotImages::kPng);
+                              const std::string& title, PlotImages plots = PlotImages::kPng,
+                              PlotBatch* batch = nullptr);
 
 // The paths wear_json names, looked up by the roles above in `listed`
 // ((role, path) pairs; "" for a role not there).

@@ -19,7 +19,12 @@ std::string reliability_csv(const Drive& drive, const WearReliabilityResult& r);
 // bin_left_years,bin_right_years,count,fit_count
 std::string life_histogram_csv(const WearReliabilityResult& r, int bins = 30);
 
-std::string wear_profile_gnuplot(const std::string& title);
+// The wear profiles of `nominal` at 25, 50, 75 and 100 % of the life, rack
+// and pinion panels. The points are inline, one datablock per member and
+// fraction, in the units drawn (mm: the CSV's digits parsed and scaled by
+// 1e3, written to parse back to that double), so gnuplot evaluates no
+// expression per point (docs/performance.md, "Plots of a small study").
+std::string wear_profile_gnuplot(const std::string& title, const WearLifeResult& nominal);
 std::string life_histogram_gnuplot(const std::string& title);
 std::string reliability_gnuplot(const std::string& title);
 

@@ -4,6 +4,7 @@
 // lists them by role in summary.json and report.md (docs/output.md).
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +26,14 @@ struct WrittenFiles {
       if (r == role) return p;
     }
     return "";
+  }
+
+  // Removes `paths` from `listed` and `written`: the images a PlotBatch did
+  // not draw (PlotBatch::render), listed when their plots were queued.
+  void drop(const std::vector<std::string>& paths) {
+    const auto gone = [&](const std::string& p) { return std::find(paths.begin(), paths.end(), p) != paths.end(); };
+    std::erase_if(listed, [&](const auto& entry) { return gone(entry.second); });
+    std::erase_if(written, gone);
   }
 };
 

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "rackopt/output/atomic_file.hpp"
-#include "rackopt/output/plot.hpp"
+#include "rackopt/output/plot_batch.hpp"
 #include "rackopt/output/stiffness_files.hpp"
 #include "rackopt/output/wear_files.hpp"
 #include "rackopt/study_report/design_tables.hpp"
@@ -50,6 +50,11 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
                             : spec.output.report ? PlotImages::kPngAndSvg
                                                  : PlotImages::kPng;
 
+  // Every plot of the folder is queued and drawn by one gnuplot process
+  // (PlotBatch) once all scripts are written; the PNGs are listed where
+  // their scripts are written, and those not drawn are dropped after.
+  PlotBatch batch(dir.string());
+
   auto write = [&](const std::string& name, const std::string& content) {
     const std::string path = (dir / name).string();
     write_file_atomic(path, content);
@@ -62,7 +67,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
     write(script_name, script);
     const std::string svg =
         images == PlotImages::kPngAndSvg ? fs::path(png).replace_extension(".svg").string() : std::string();
-    const RenderedImages drawn = render_plot_images(dir.string(), script_name, png, svg, plot_warnings);
+    const RenderedImages drawn = draw_or_queue(&batch, dir.string(), script_name, png, svg, plot_warnings);
     if (!drawn.png.empty()) {
       rep.files.add(role, drawn.png);
       rep.written.push_back(drawn.png);
@@ -91,7 +96,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
     if (result.best_curve) {
       const std::string which = spec.kind == StudyKind::kPareto ? "chosen design" : "best design";
       take(write_stiffness_files(*result.best_curve, dir.string(), title + ": stiffness of the " + which,
-                                 images));
+                                 images, &batch));
     } else if (!result.best_curve_error.empty()) {
       plot_warnings.push_back(result.best_curve_error);
     }
@@ -99,7 +104,7 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
 
   // reliability: the files of `rackopt wear` for the study's design.
   if (result.reliability && result.best_drive) {
-    take(write_wear_files(*result.best_drive, *result.reliability, dir.string(), title, images));
+    take(write_wear_files(*result.best_drive, *result.reliability, dir.string(), title, images, &batch));
   }
 
   write_fe_verification_files(spec, result, rep.files, write, plot);
@@ -119,6 +124,14 @@ StudyReport write_study_report(const StudySpec& spec, const StudyResult& result,
   }
   if (sweep && !spec.variables.empty() && !labels.empty()) {
     plot("sweep_png", "sweep.gp", sweep_gnuplot(spec, *sweep, labels), "sweep.png");
+  }
+  {
+    const std::vector<std::string> missing = batch.render(plot_warnings);
+    const auto drawn = [&](const std::string& path) {
+      return std::find(missing.begin(), missing.end(), path) == missing.end();
+    };
+    std::erase_if(rep.written, [&](const std::string& path) { return !drawn(path); });
+    std::erase_if(rep.files.entries, [&](const auto& entry) { return !drawn(entry.second); });
   }
   if (!result.evaluations_csv_path.empty() && fs::exists(result.evaluations_csv_path)) {
     rep.files.add("evaluations_csv", result.evaluations_csv_path);

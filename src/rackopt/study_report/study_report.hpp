@@ -54,7 +54,7 @@ struct StudyReport {
 
 // Writes the report of `result` into `out_dir` (created if missing); every
 // file atomically (write_file_atomic; each plot's PNG and, with the report,
-// its SVG from one gnuplot run: render_plot_images). Which files depends on
+// its SVG, all plots from one gnuplot run: PlotBatch). Which files depends on
 // the kind (docs/output.md); plots only when spec.output.plots, report.md,
 // report.html and the SVGs only when
 // spec.output.report, the stiffness curve only when
