@@ -91,9 +91,6 @@ int cmd_run(const Args& a);
 // child (cmd_run_ranks.cpp; docs/studies.md, "Running on several cores and
 // machines"); its exit status, 130 when a Ctrl-C or SIGTERM stopped it.
 int cmd_run_ranks(const Args& a);
-// `arguments` (argv[1..]) without its --ranks options: what every rank is
-// given after the program. Everything after "--" is kept (file names).
-std::vector<std::string> arguments_for_ranks(const std::vector<std::string>& arguments);
 int cmd_fe(const Args& a);
 
 }  // namespace rackopt::cli

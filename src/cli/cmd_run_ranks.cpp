@@ -24,6 +24,7 @@
 #endif
 
 namespace rackopt::cli {
+#ifdef RACKOPT_WITH_MPI
 namespace {
 
 // mpirun: RACKOPT_MPIRUN when set (a site's other MPI), else the one the
@@ -59,8 +60,8 @@ std::string this_program() {
   return self.string();
 }
 
-}  // namespace
-
+// `arguments` (argv[1..]) without its --ranks options: what every rank is
+// given after the program. Everything after "--" is kept (file names).
 std::vector<std::string> arguments_for_ranks(const std::vector<std::string>& arguments) {
   std::vector<std::string> kept;
   bool files_only = false;  // after "--" every argument is a file name
@@ -76,6 +77,9 @@ std::vector<std::string> arguments_for_ranks(const std::vector<std::string>& arg
   }
   return kept;
 }
+
+}  // namespace
+#endif
 
 int cmd_run_ranks(const Args& a) {
 #ifdef RACKOPT_WITH_MPI
