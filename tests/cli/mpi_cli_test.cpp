@@ -314,6 +314,9 @@ TEST(MpiCli, CtrlCToRanksOptionStopsWithTheStoppedReportAndExit130AndResumeCompl
                             "kill -INT -$job; wait $job; echo rackopt_exit=$?",
                         180);
   EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
+  // The 130 is mpirun's own (rank 0's status), not ours after mpirun aborted
+  // the job on a SIGINT of its own.
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
   ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
   const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
   EXPECT_EQ(summary["status"], "stopped");
@@ -348,6 +351,7 @@ TEST(MpiCli, SecondCtrlCToRanksOptionEndsAtOnceWithExit130AndNoRankLeft) {
                         "kill -INT -$job; sleep 0.05; kill -INT -$job; wait $job; echo rackopt_exit=$?");
   EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
   EXPECT_NE(m.output.find("stopped at once"), std::string::npos) << m.output;
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
   const auto printed_json = nlohmann::json::parse(read_text(printed));
   EXPECT_EQ(printed_json["error"], "interrupted");
   // "[m]pi_ranks_twice": the pattern does not match the shell that runs pgrep.
