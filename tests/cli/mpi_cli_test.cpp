@@ -336,6 +336,24 @@ TEST(MpiCli, CtrlCToRanksOptionStopsWithTheStoppedReportAndExit130AndResumeCompl
   EXPECT_EQ(std::stol(r[2]), stopped_at);
 }
 
+// SIGTERM to the --ranks program (a job scheduler's or `kill`'s, to its pid
+// alone) is a stop as a Ctrl-C is: forwarded, the stopped report, exit 130.
+TEST(MpiCli, SigtermToRanksOptionStopsWithTheStoppedReportAndExit130) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_ranks_sigterm");
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const Shell m = shell(kMpiEnv + " " + RACKOPT_CLI + " run studies/spall_severity_sweep.yaml --set sweep.levels=30 " +
+                            "--ranks 2 --out " + out + " & job=$!; for i in $(seq 1200); do [ -s " + wal +
+                            " ] && break; sleep 0.05; done; sleep 1; kill -TERM $job; wait $job; echo rackopt_exit=$?",
+                        180);
+  EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_LT(summary["evaluations"].get<long>(), 3600);
+}
+
 // A second Ctrl-C is forwarded too: rank 0 ends at once (the --json error
 // object, exit 130) inside a design's Monte Carlo, and no rank is left running.
 TEST(MpiCli, SecondCtrlCToRanksOptionEndsAtOnceWithExit130AndNoRankLeft) {
