@@ -28,6 +28,8 @@ struct Args {
   int threads = 0;         // --threads N (wear, run, fe): 0 = all cores
   bool resume = false;     // --resume (run): continue a study from its evaluation store
   bool progress = false;   // --progress (run): progress bar even when stderr is not a terminal
+  int ranks = 0;           // --ranks N (run): N MPI ranks under an mpirun of our own; 0 = not given
+  std::vector<std::string> arguments;  // argv[1..] as given (what `run --ranks` hands the ranks)
   int positions = -1;      // --positions N (fe): 1..64; -1 = 4
   int level = -1;          // --level L (fe): 0..6; -1 = 0
   bool extended_contact = false;  // --extended-contact (fe)
@@ -42,6 +44,12 @@ struct UsageError : std::runtime_error {
   explicit UsageError(const std::string& message, std::string command_name = "")
       : std::runtime_error(message), command(std::move(command_name)) {}
   std::string command;  // the command whose command line is wrong; "" before one was recognised
+};
+
+// `run --ranks N` cannot start the ranks: a build without MPI, no mpirun,
+// or --ranks under an mpirun already (exit 2, JSON error "mpi_unavailable").
+struct MpiUnavailable : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 // What the command line asks for: a command to run, or a text to print on
@@ -83,6 +91,10 @@ int cmd_stiffness(const Args& a);
 int cmd_wear(const Args& a);
 int cmd_dynamics(const Args& a);
 int cmd_run(const Args& a);
+// `run --ranks N` with N > 1: `mpirun -np N <this program> run ...` as a
+// child (cmd_run_ranks.cpp; docs/studies.md, "Running on several cores and
+// machines"); its exit status, 130 when a Ctrl-C or SIGTERM stopped it.
+int cmd_run_ranks(const Args& a);
 int cmd_fe(const Args& a);
 
 }  // namespace rackopt::cli

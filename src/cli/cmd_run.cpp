@@ -23,7 +23,7 @@
 
 namespace rackopt::cli {
 int cmd_run(const Args& a) {
-  namespace fs = std::filesystem;
+  if (a.ranks > 0) return cmd_run_ranks(a);  // mpirun's job, or --ranks 1 back here
   const study::StudySpec spec = studyfile::load_study_file(a.file, a.overrides);
   const std::string out_dir =
       a.out_dir.empty() ? study::default_out_dir(spec) : a.out_dir;

@@ -26,6 +26,9 @@ namespace {
 constexpr long kMaxThreads = kThreadsLimit.hi;  // 0 (all cores) is what leaving --threads out means
 constexpr long kMaxLevel = 6;  // FeOptions::level
 constexpr long kMaxSeed = kSeedLimit.hi;
+// --ranks: mpirun's own limit is the machines given to it; this one only
+// keeps a typo (an extra digit or two) from asking for a job nobody meant.
+constexpr long kMaxRanks = 65536;
 
 long parse_whole(const std::string& flag, const std::string& text, long lo, long hi) {
   std::size_t used = 0;
@@ -216,6 +219,10 @@ void add_run(CLI::App& app, Args& a) {
   c.add_flag("--resume", a.resume,
              "continue the study recorded in DIR/evaluations.sqlite\nwithout redoing recorded evaluations");
   c.add_flag("--progress", a.progress, "show the progress bar even when stderr is not a\nterminal");
+  add_whole(c, "--ranks", "N", 1, kMaxRanks,
+            "run on N MPI ranks, " + range(1, kMaxRanks) + ": starts mpirun -np N with\nthe other options "
+            "(Ctrl-C stops cleanly); 1: in this\nprocess, without mpirun",
+            [&a](long v) { a.ranks = static_cast<int>(v); });
   c.footer(
       "Every evaluation goes to DIR/evaluations.sqlite as it happens, then\n"
       "DIR/summary.json, CSVs, plots and DIR/report.md. Ctrl-C stops cleanly and\n"
@@ -223,7 +230,7 @@ void add_run(CLI::App& app, Args& a) {
       "Examples:\n"
       "  rackopt run studies/rack_railway_sizing.yaml --set solver.max_evaluations=50\n"
       "  rackopt run studies/ship_lift_wear_tradeoff.yaml -j 4 -o out/ship_lift_front --resume\n"
-      "  mpirun -np 2 rackopt run studies/ship_lift_four_objectives.yaml --out out/four_mpi");
+      "  rackopt run studies/ship_lift_four_objectives.yaml --ranks 2 --out out/four_mpi");
 }
 
 std::unique_ptr<CLI::App> make_app(Args& a) {
@@ -409,6 +416,7 @@ std::string mismatch_message(const std::string& what) {
 
 CommandLine parse_command_line(int argc, char** argv) {
   CommandLine line;
+  line.args.arguments.assign(argv + 1, argv + argc);
   const std::unique_ptr<CLI::App> app = make_app(line.args);
   if (argc > 1 && std::string(argv[1]) == "help") {
     // Before parsing: CLI11 would take the command named after it for a second command.

@@ -164,6 +164,8 @@ int main(int argc, char** argv) {
     return fail(kBadInput, "output_folder", e.what());
   } catch (const rackopt::OutputFolderInUse& e) {
     return fail(kBadInput, "output_folder", e.what());
+  } catch (const MpiUnavailable& e) {
+    return fail(kBadInput, "mpi_unavailable", e.what());
   } catch (const rackopt::fe::CcxNotFound& e) {
     return fail(kRunFailed, "ccx_not_found", e.what());
   } catch (const rackopt::fe::GmshNotFound& e) {

@@ -30,7 +30,7 @@ const std::vector<CommandOptions>& every_command_option() {
       {"fe",
        {"-s,--set", "-o,--out", "--json", "-p,--positions", "-l,--level", "--extended-contact", "--pictures",
         "--rack-supports", "-j,--threads"}},
-      {"run", {"-s,--set", "-o,--out", "--json", "-j,--threads", "--resume", "--progress"}},
+      {"run", {"-s,--set", "-o,--out", "--json", "-j,--threads", "--resume", "--progress", "--ranks"}},
   };
   return table;
 }

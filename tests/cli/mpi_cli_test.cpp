@@ -1,11 +1,13 @@
-// `mpirun -np 2 rackopt run`: the same record and results as a serial run,
-// and a rank that cannot start is named. Skipped when the build has no MPI.
+// `mpirun -np 2 rackopt run` and `rackopt run --ranks 2`: the same record
+// and results as a serial run, a rank that cannot start is named, and the
+// stops. Skipped when the build has no MPI.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <regex>
 #include <filesystem>
 #include <sstream>
@@ -242,6 +244,137 @@ TEST(MpiCli, SigusrOneToMpirunStopsEveryRankWithTheStoppedReportAndExit130) {
   EXPECT_LT(summary["evaluations"].get<long>(), 6400);
   EXPECT_EQ(nlohmann::json::parse(read_text(printed)), summary);
   EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+}
+
+// `rackopt run --ranks 2` starts mpirun -np 2 with this program and the
+// other options as they were given (an argv, no shell: a folder name with
+// two spaces and a '*' arrives whole), and the record is a serial run's.
+TEST(MpiCli, RanksOptionRunsMpirunWithTheOptionsUnchangedAndGivesTheRecordOfASerialRun) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string dir = scratch_dir("mpi_ranks_option");
+  const std::string serial = dir + "/serial", ranks = dir + "/ranks  out*";
+  // An mpirun that writes the arguments it was given, one a line, then is mpirun.
+  const std::string logger = dir + "/mpirun_logger.sh";
+  {
+    std::ofstream f(logger);
+    f << "#!/bin/sh\nprintf '%s\\n' \"$@\" >\"" << dir << "/mpirun_args.txt\"\nexec " << kMpirun << " \"$@\"\n";
+  }
+  fs::permissions(logger, fs::perms::owner_all);
+  const std::string study = "studies/spall_severity_sweep.yaml";
+  ASSERT_EQ(shell(std::string(RACKOPT_CLI) + " run " + study + " --out " + serial).code, 0);
+  const Shell m = shell(kMpiEnv + " RACKOPT_MPIRUN=" + logger + " " + RACKOPT_CLI + " run " + study +
+                        " --ranks 2 --set sweep.levels=6 --ranks=2 --out \"" + ranks + "\" --json");
+  ASSERT_EQ(m.code, 0) << m.output;
+  EXPECT_EQ(record_rows(serial), record_rows(ranks));
+  EXPECT_EQ(nlohmann::json::parse(read_text(ranks + "/summary.json"))["status"], "ok");
+  const std::string expected = "-np\n2\n" + fs::canonical(RACKOPT_CLI).string() + "\nrun\n" + study +
+                               "\n--set\nsweep.levels=6\n--out\n" + ranks + "\n--json\n";
+  EXPECT_EQ(read_text(dir + "/mpirun_args.txt"), expected);
+}
+
+// --ranks 1 runs in this process (no mpirun, not even a missing one);
+// --ranks 0 and a missing mpirun are exit 2 with a message that says why.
+TEST(MpiCli, RanksOptionRefusesZeroAndAMissingMpirunAndRunsOneRankInProcess) {
+  const std::string fake = "RACKOPT_MPIRUN=/no/such/mpirun ";
+  const std::string study = std::string(RACKOPT_CLI) + " run studies/spall_severity_sweep.yaml";
+  const Shell zero = shell(study + " --ranks 0 --out " + scratch_path("mpi_ranks_zero"));
+  EXPECT_EQ(zero.code, 2) << zero.output;
+  EXPECT_NE(zero.output.find("--ranks needs a whole number in 1..65536, got '0'"), std::string::npos) << zero.output;
+  const Shell missing = shell(fake + study + " --ranks 2 --json --out " + scratch_path("mpi_ranks_missing"));
+  EXPECT_EQ(missing.code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("\"error\":\"mpi_unavailable\""), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find(kHaveMpi ? "/no/such/mpirun" : "built with MPI"), std::string::npos) << missing.output;
+  const std::string one_out = scratch_path("mpi_ranks_one");
+  const Shell one = shell(fake + study + " --ranks 1 --out " + one_out);
+  EXPECT_EQ(one.code, 0) << one.output;
+  EXPECT_TRUE(fs::exists(one_out + "/summary.json"));
+  if (kHaveMpi) {  // under mpirun, --ranks is mpirun's -np
+    const Shell nested = shell(kMpiEnv + " " + kMpirun + " -np 1 " + study + " --ranks 2 --out " +
+                               scratch_path("mpi_ranks_nested"));
+    EXPECT_NE(nested.code, 0) << nested.output;
+    EXPECT_NE(nested.output.find("under mpirun leave it out"), std::string::npos) << nested.output;
+  }
+}
+
+// A Ctrl-C in the terminal goes to the foreground process group: here the
+// whole group of the --ranks program (setsid makes one), as a terminal would
+// send it. mpirun, in a group of its own, does not get it; the program
+// forwards it as SIGUSR1, every rank stops, rank 0 writes the whole stopped
+// report, and the exit status is 130. `--resume` then completes the study
+// from the store. (Mirrors SigusrOneToMpirunStopsEveryRankWithTheStoppedReportAndExit130.)
+TEST(MpiCli, CtrlCToRanksOptionStopsWithTheStoppedReportAndExit130AndResumeCompletes) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_ranks_ctrl_c"), printed = scratch_dir("mpi_ranks_ctrl_c_json") + "/stdout.json";
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  // 30 x 30 x 4 designs of about 4 ms: the stop lands after a few hundred.
+  const std::string run = std::string(RACKOPT_CLI) + " run studies/spall_severity_sweep.yaml --set sweep.levels=30 " +
+                          "--ranks 2 --json --out " + out;
+  const Shell m = shell(kMpiEnv + " setsid " + run + " >" + printed + " & job=$!; " + "for i in $(seq 1200); do [ -s " +
+                            wal + " ] && break; sleep 0.05; done; sleep 1; " +
+                            "kill -INT -$job; wait $job; echo rackopt_exit=$?",
+                        180);
+  EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
+  // The 130 is mpirun's own (rank 0's status), not ours after mpirun aborted
+  // the job on a SIGINT of its own.
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  const long stopped_at = summary["evaluations"].get<long>();
+  EXPECT_LT(stopped_at, 3600);
+  EXPECT_EQ(nlohmann::json::parse(read_text(printed)), summary);
+  EXPECT_NE(read_text(out + "/report.md").find("stopped"), std::string::npos);
+
+  const Shell resumed = shell(kMpiEnv + " " + run + " --resume", 180);
+  ASSERT_EQ(resumed.code, 0) << resumed.output;
+  const auto done = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(done["status"], "ok");
+  EXPECT_EQ(done["evaluations"].get<long>(), 3600);
+  std::smatch r;
+  ASSERT_TRUE(std::regex_search(resumed.output, r, std::regex(R"(\((\d+) failed, (\d+) from the store\))")))
+      << resumed.output;
+  EXPECT_EQ(std::stol(r[2]), stopped_at);
+}
+
+// SIGTERM to the --ranks program (a job scheduler's or `kill`'s, to its pid
+// alone) is a stop as a Ctrl-C is: forwarded, the stopped report, exit 130.
+TEST(MpiCli, SigtermToRanksOptionStopsWithTheStoppedReportAndExit130) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_ranks_sigterm");
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const Shell m = shell(kMpiEnv + " " + RACKOPT_CLI + " run studies/spall_severity_sweep.yaml --set sweep.levels=30 " +
+                            "--ranks 2 --out " + out + " & job=$!; for i in $(seq 1200); do [ -s " + wal +
+                            " ] && break; sleep 0.05; done; sleep 1; kill -TERM $job; wait $job; echo rackopt_exit=$?",
+                        180);
+  EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
+  ASSERT_TRUE(fs::exists(out + "/summary.json")) << m.output;
+  const auto summary = nlohmann::json::parse(read_text(out + "/summary.json"));
+  EXPECT_EQ(summary["status"], "stopped");
+  EXPECT_LT(summary["evaluations"].get<long>(), 3600);
+}
+
+// A second Ctrl-C is forwarded too: rank 0 ends at once (the --json error
+// object, exit 130) inside a design's Monte Carlo, and no rank is left running.
+TEST(MpiCli, SecondCtrlCToRanksOptionEndsAtOnceWithExit130AndNoRankLeft) {
+  if (!kHaveMpi) GTEST_SKIP() << "built without MPI";
+  const std::string out = scratch_path("mpi_ranks_twice"), printed = scratch_dir("mpi_ranks_twice_json") + "/stdout.json";
+  const std::string wal = out + "/evaluations.sqlite-wal";
+  const std::string study =
+      "studies/gantry_sizing.yaml --set metric_options.exact_quantile=off --set metric_options.reliability_samples=2000 "
+      "--set output.plots=off";
+  const Shell m = shell(kMpiEnv + " setsid " + RACKOPT_CLI + " run " + study + " --ranks 2 --json --out " + out + " >" +
+                        printed + " & job=$!; " + "for i in $(seq 1200); do [ -s " + wal +
+                        " ] && break; sleep 0.05; done; sleep 1; " +
+                        "kill -INT -$job; sleep 0.05; kill -INT -$job; wait $job; echo rackopt_exit=$?");
+  EXPECT_NE(m.output.find("rackopt_exit=130\n"), std::string::npos) << m.output;
+  EXPECT_NE(m.output.find("stopped at once"), std::string::npos) << m.output;
+  EXPECT_EQ(m.output.find("mpirun ended with status"), std::string::npos) << m.output;
+  const auto printed_json = nlohmann::json::parse(read_text(printed));
+  EXPECT_EQ(printed_json["error"], "interrupted");
+  // "[m]pi_ranks_twice": the pattern does not match the shell that runs pgrep.
+  const std::string left = shell("pgrep -f \"[m]pi_ranks_twice\" || true").output;
+  EXPECT_EQ(left, "") << left;
 }
 
 }  // namespace
