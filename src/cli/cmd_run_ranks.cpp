@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,14 +102,23 @@ int cmd_run_ranks(const Args& a) {
   std::vector<std::string> args = {"-np", std::to_string(a.ranks), this_program()};
   const std::vector<std::string> rest = arguments_for_ranks(a.arguments);
   args.insert(args.end(), rest.begin(), rest.end());
-  const ForwardedChildOutcome child = run_forwarding_stops(mpirun, args, SIGUSR1);
+  const ForwardedChildOutcome child = run_forwarding_stops(mpirun, args, SIGUSR1, a.json);
   if (!child.started) throw MpiUnavailable("--ranks: " + child.error);
+  const std::string stop =
+      child.stop_signal == 0 ? std::string() : child.stop_signal == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM";
+  if (a.json && !child.printed && child.exit_code != 0) {
+    // mpirun ended before rank 0 printed (it could not start the ranks, or a
+    // stop came first): the one JSON object of --json is ours to print.
+    const std::string what = "mpirun ended with status " + std::to_string(child.exit_code) +
+                             " before rank 0 printed its result (mpirun's messages are on stderr)";
+    if (!stop.empty()) throw Interrupted(what + "; stopped by " + stop);
+    throw std::runtime_error(what);
+  }
   // As for a run in one process: a stop that came at all ends the run as
   // interrupted, also one that reached mpirun before it could forward it
   // (it then ends with its own status, and nothing was recorded).
   if (child.stop_signal != 0 && child.exit_code != kInterruptedExit) {
-    std::cerr << "rackopt: stopped by " << (child.stop_signal == SIGINT ? "SIGINT (Ctrl-C)" : "SIGTERM")
-              << "; mpirun ended with status " << child.exit_code << "\n";
+    std::cerr << "rackopt: stopped by " << stop << "; mpirun ended with status " << child.exit_code << "\n";
     return kInterruptedExit;
   }
   return child.exit_code;

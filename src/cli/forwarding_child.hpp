@@ -19,12 +19,15 @@ struct ForwardedChildOutcome {
   std::string error;      // !started: why not
   int exit_code = -1;     // its exit status, or 128 + the signal that ended it (as a shell says)
   int stop_signal = 0;    // the first SIGINT or SIGTERM we forwarded; 0 = none came
+  bool printed = false;   // relay_stdout: the child wrote something on its stdout
 };
 
 // Starts `program` (an absolute path) with `arguments` (argv[1..], passed
 // as they are: no shell) in a process group of its own, stdin /dev/null (a
 // background group reading the terminal would be stopped by SIGTTIN),
-// stdout and stderr ours, SIGINT, SIGTERM and SIGUSR1 at their defaults,
+// stdout and stderr ours (with `relay_stdout` its stdout is a pipe we copy
+// to ours as it comes, so that we know whether it printed anything: the
+// one JSON object of --json), SIGINT, SIGTERM and SIGUSR1 at their defaults,
 // and waits for it. Meanwhile the first and the second SIGINT or SIGTERM
 // we get are sent to the child as `stop_as` (mpirun: the first a clean
 // stop, the second the at-once end, as for a program run alone), a third
@@ -32,6 +35,6 @@ struct ForwardedChildOutcome {
 // SIGINT and SIGTERM handlers are put back before it returns. One child at
 // a time; call from the main thread.
 ForwardedChildOutcome run_forwarding_stops(const std::string& program, const std::vector<std::string>& arguments,
-                                           int stop_as);
+                                           int stop_as, bool relay_stdout = false);
 
 }  // namespace rackopt::cli

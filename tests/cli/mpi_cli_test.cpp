@@ -273,7 +273,8 @@ TEST(MpiCli, RanksOptionRunsMpirunWithTheOptionsUnchangedAndGivesTheRecordOfASer
 }
 
 // --ranks 1 runs in this process (no mpirun, not even a missing one);
-// --ranks 0 and a missing mpirun are exit 2 with a message that says why.
+// --ranks 0 and a missing mpirun are exit 2 with a message that says why;
+// an mpirun that fails on its own is exit 1 (with --json its one object).
 TEST(MpiCli, RanksOptionRefusesZeroAndAMissingMpirunAndRunsOneRankInProcess) {
   const std::string fake = "RACKOPT_MPIRUN=/no/such/mpirun ";
   const std::string study = std::string(RACKOPT_CLI) + " run studies/spall_severity_sweep.yaml";
@@ -288,6 +289,16 @@ TEST(MpiCli, RanksOptionRefusesZeroAndAMissingMpirunAndRunsOneRankInProcess) {
   const Shell one = shell(fake + study + " --ranks 1 --out " + one_out);
   EXPECT_EQ(one.code, 0) << one.output;
   EXPECT_TRUE(fs::exists(one_out + "/summary.json"));
+  if (kHaveMpi) {
+    // An mpirun that fails before rank 0 printed: --json still prints one object.
+    const Shell failed = shell("RACKOPT_MPIRUN=false " + study + " --ranks 2 --json --out " +
+                               scratch_path("mpi_ranks_failed") + " 2>/dev/null");
+    EXPECT_EQ(failed.code, 1) << failed.output;
+    const auto object = nlohmann::json::parse(failed.output);
+    EXPECT_EQ(object["error"], "run");
+    EXPECT_NE(object["message"].get<std::string>().find("mpirun ended with status 1 before rank 0 printed"),
+              std::string::npos);
+  }
   if (kHaveMpi) {  // under mpirun, --ranks is mpirun's -np
     const Shell nested = shell(kMpiEnv + " " + kMpirun + " -np 1 " + study + " --ranks 2 --out " +
                                scratch_path("mpi_ranks_nested"));
